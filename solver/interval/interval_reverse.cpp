@@ -1,0 +1,364 @@
+// Reverse operators. Each one states the relation it inverts; soundness comes from
+// computing every candidate set with the outward-rounded forward operations.
+
+#include "solver/interval/interval_reverse.h"
+
+#include <cmath>
+
+namespace gesmi {
+namespace {
+
+// Sets every argument empty and reports it, so a failed contraction is never partial.
+bool fail(Interval& a) {
+  a = Interval::empty();
+  return false;
+}
+bool fail(Interval& a, Interval& b) {
+  a = b = Interval::empty();
+  return false;
+}
+
+bool narrow(Interval& x, const Interval& by) { return x.intersect_with(by); }
+
+// Lower and upper n-th roots of v >= 0, checked with directed powers so that
+// root_down(v)^n <= v <= root_up(v)^n holds exactly.
+double power_bound(double r, int n, bool up) {
+  double result = 1.0;
+  for (int i = 0; i < n; ++i) result = up ? mul_up(result, r) : mul_down(result, r);
+  return result;
+}
+double root_down(double v, int n) {
+  if (v == 0.0 || v == kInf || n == 1) return v;
+  if (n == 2) return std::max(0.0, next_down(std::sqrt(v)));
+  double r = std::max(0.0, next_down(std::pow(v, 1.0 / n)));
+  for (int i = 0; r > 0.0 && power_bound(r, n, true) > v; ++i) r = i < 16 ? next_down(r) : r * (1.0 - 0x1p-40);
+  return r;
+}
+double root_up(double v, int n) {
+  if (v == 0.0 || v == kInf || n == 1) return v;
+  if (n == 2) return next_up(std::sqrt(v));
+  double r = next_up(std::pow(v, 1.0 / n));
+  for (int i = 0; r < kInf && power_bound(r, n, false) < v; ++i) r = i < 16 ? next_up(r) : r * (1.0 + 0x1p-40);
+  return r;
+}
+// {x >= 0 : x^n in c}, for c with c >= 0 (n >= 1).
+Interval positive_root(const Interval& c, int n) {
+  if (c.is_empty()) return c;
+  return Interval::from_bounds(root_down(c.lo(), n), root_up(c.hi(), n));
+}
+
+// Hull of the points of x inside the union of the periodic pieces
+// [alpha_j + k period, beta_j + k period], k integer. The pieces are given as
+// enclosures of their end points, so the union of the computed pieces contains
+// the true solution set and the result is a sound contraction of x.
+struct PeriodicPiece {
+  Interval alpha, beta;
+};
+
+template <std::size_t N>
+Interval periodic_hull(const Interval& x, const PeriodicPiece (&pieces)[N], const Interval& period) {
+  if (x.is_empty()) return x;
+  // Far from 0 the multiples of the period are too coarse to contract anything.
+  constexpr double kFar = 0x1p40;
+  if (x.lo() < -kFar || x.hi() > kFar) return x;
+  const auto computed_piece = [&](double k, const PeriodicPiece& p) {
+    const Interval shift = Interval(k) * period;
+    return Interval((p.alpha + shift).lo(), (p.beta + shift).hi());
+  };
+  // Scan the pieces whose index is near the end point: one period before and two
+  // after cover the whole window [end - period, end + period].
+  const auto scan = [&](double end, bool lower) {
+    double best = lower ? kInf : -kInf;
+    const double k0 = std::floor(end / period.mid());
+    for (double k = k0 - 2; k <= k0 + 2; ++k) {
+      for (const PeriodicPiece& p : pieces) {
+        const Interval piece = intersect(computed_piece(k, p), x);
+        if (piece.is_empty()) continue;
+        best = lower ? std::min(best, piece.lo()) : std::max(best, piece.hi());
+      }
+    }
+    return best;
+  };
+  const double lo = scan(x.lo(), true);
+  const double hi = scan(x.hi(), false);
+  // Both scans together cover x when it is shorter than a period, and a wider x
+  // always meets the (non-empty, periodic) solution set: nothing found means empty.
+  if (lo == kInf || hi == -kInf) return Interval::empty();
+  return Interval(lo, hi);
+}
+
+Interval libm_enclosure(double v) {
+  if (v == 0.0) return Interval(0.0);
+  return Interval(step_down(v, kLibmSteps), step_up(v, kLibmSteps));
+}
+Interval asin_enclosure(double c) {
+  if (c == 0.0) return Interval(0.0);
+  return intersect(libm_enclosure(std::asin(c)), Interval(-Interval::half_pi().hi(), Interval::half_pi().hi()));
+}
+Interval acos_enclosure(double c) {
+  if (c == 1.0) return Interval(0.0);
+  return intersect(libm_enclosure(std::acos(c)), Interval(0.0, Interval::pi().hi()));
+}
+Interval atan_enclosure(double c) {
+  if (c == kInf) return Interval::half_pi();
+  if (c == -kInf) return -Interval::half_pi();
+  return libm_enclosure(std::atan(c));
+}
+
+}  // namespace
+
+// ---- arithmetic -------------------------------------------------------------
+
+bool bwd_add(const Interval& y, Interval& x1, Interval& x2) {
+  if (!narrow(x1, y - x2) || !narrow(x2, y - x1)) return fail(x1, x2);
+  return true;
+}
+
+bool bwd_sub(const Interval& y, Interval& x1, Interval& x2) {
+  if (!narrow(x1, y + x2) || !narrow(x2, x1 - y)) return fail(x1, x2);
+  return true;
+}
+
+std::pair<Interval, Interval> mul_rev_to_pair(const Interval& b, const Interval& c) {
+  const Interval none = Interval::empty();
+  if (b.is_empty() || c.is_empty()) return {none, none};
+  if (!b.contains(0.0)) return {c / b, none};
+  if (c.contains(0.0)) return {Interval::entire(), none};
+  if (b.lo() == 0.0 && b.hi() == 0.0) return {none, none};
+  const double bl = b.lo(), bh = b.hi();
+  if (c.lo() > 0.0) {
+    const double cl = c.lo();
+    if (bl < 0.0 && bh > 0.0) return {Interval::from_bounds(-kInf, div_up(cl, bl)), Interval::from_bounds(div_down(cl, bh), kInf)};
+    if (bl == 0.0) return {Interval::from_bounds(div_down(cl, bh), kInf), none};
+    return {Interval::from_bounds(-kInf, div_up(cl, bl)), none};
+  }
+  const double ch = c.hi();  // c < 0
+  if (bl < 0.0 && bh > 0.0) return {Interval::from_bounds(-kInf, div_up(ch, bh)), Interval::from_bounds(div_down(ch, bl), kInf)};
+  if (bl == 0.0) return {Interval::from_bounds(-kInf, div_up(ch, bh)), none};
+  return {Interval::from_bounds(div_down(ch, bl), kInf), none};
+}
+
+Interval mul_rev(const Interval& b, const Interval& c, const Interval& x) {
+  const auto [first, second] = mul_rev_to_pair(b, c);
+  return hull(intersect(first, x), intersect(second, x));
+}
+
+bool bwd_mul(const Interval& y, Interval& x1, Interval& x2) {
+  if (!narrow(x1, mul_rev(x2, y, x1)) || !narrow(x2, mul_rev(x1, y, x2))) return fail(x1, x2);
+  return true;
+}
+
+bool bwd_div(const Interval& y, Interval& x1, Interval& x2) {
+  // y = x1 / x2 with x2 != 0, hence x1 = y * x2.
+  if (!narrow(x1, y * x2) || !narrow(x2, mul_rev(y, x1, x2))) return fail(x1, x2);
+  if (x2.lo() == 0.0 && x2.hi() == 0.0) return fail(x1, x2);
+  return true;
+}
+
+bool bwd_neg(const Interval& y, Interval& x) {
+  if (!narrow(x, -y)) return fail(x);
+  return true;
+}
+
+// ---- powers and roots ---------------------------------------------------------
+
+Interval sqr_rev(const Interval& c, const Interval& x) { return pow_rev(c, x, 2); }
+
+Interval pow_rev(const Interval& c, const Interval& x, int n) {
+  if (c.is_empty() || x.is_empty()) return Interval::empty();
+  if (n == 0) return c.contains(1.0) ? x : Interval::empty();
+  if (n > 0) {
+    if (n % 2 == 0) {
+      const Interval root = positive_root(intersect(c, Interval::pos_reals()), n);
+      return hull(intersect(root, x), intersect(-root, x));
+    }
+    const Interval pos = positive_root(intersect(c, Interval::pos_reals()), n);
+    const Interval neg = -positive_root(intersect(-c, Interval::pos_reals()), n);
+    return hull(intersect(pos, x), intersect(neg, x));
+  }
+  // x^n = 1 / x^|n| with x != 0. n = INT_MIN: x^n = (x^(n/2))^2.
+  if (n == std::numeric_limits<int>::min()) {
+    const Interval inner = pow_rev(sqr_rev(c), Interval::entire(), n / 2);
+    return intersect(inner, x);
+  }
+  const int m = -n;
+  const Interval pos_part = intersect(c, Interval::pos_reals());
+  const Interval inv_pos = Interval(1.0) / pos_part;  // empty when c has no positive point
+  if (m % 2 == 0) {
+    const Interval root = positive_root(intersect(inv_pos, Interval::pos_reals()), m);
+    return hull(intersect(root, x), intersect(-root, x));
+  }
+  const Interval inv_neg = Interval(1.0) / intersect(-c, Interval::pos_reals());
+  const Interval pos = positive_root(intersect(inv_pos, Interval::pos_reals()), m);
+  const Interval neg = -positive_root(intersect(inv_neg, Interval::pos_reals()), m);
+  return hull(intersect(pos, x), intersect(neg, x));
+}
+
+bool bwd_pow(const Interval& y, Interval& x, int n) {
+  if (!narrow(x, pow_rev(y, x, n))) return fail(x);
+  return true;
+}
+
+bool bwd_sqr(const Interval& y, Interval& x) { return bwd_pow(y, x, 2); }
+
+bool bwd_sqrt(const Interval& y, Interval& x) {
+  const Interval root = intersect(y, Interval::pos_reals());
+  if (!narrow(x, sqr(root)) || !narrow(x, Interval::pos_reals())) return fail(x);
+  return true;
+}
+
+Interval abs_rev(const Interval& c, const Interval& x) {
+  const Interval pos = intersect(c, Interval::pos_reals());
+  return hull(intersect(pos, x), intersect(-pos, x));
+}
+
+bool bwd_abs(const Interval& y, Interval& x) {
+  if (!narrow(x, abs_rev(y, x))) return fail(x);
+  return true;
+}
+
+bool bwd_exp(const Interval& y, Interval& x) {
+  if (!narrow(x, log(y))) return fail(x);
+  return true;
+}
+
+bool bwd_log(const Interval& y, Interval& x) {
+  if (!narrow(x, exp(y)) || x.hi() <= 0.0) return fail(x);
+  return true;
+}
+
+bool bwd_min(const Interval& y, Interval& x1, Interval& x2) {
+  // Both arguments are >= y.lo; one of them equals the minimum.
+  if (!narrow(x1, Interval(y.lo(), kInf)) || !narrow(x2, Interval(y.lo(), kInf))) return fail(x1, x2);
+  if (x2.lo() > y.hi() && !narrow(x1, y)) return fail(x1, x2);
+  if (x1.lo() > y.hi() && !narrow(x2, y)) return fail(x1, x2);
+  return true;
+}
+
+bool bwd_max(const Interval& y, Interval& x1, Interval& x2) {
+  Interval n1 = -x1, n2 = -x2;
+  if (!bwd_min(-y, n1, n2)) return fail(x1, x2);
+  x1 = -n1;
+  x2 = -n2;
+  return true;
+}
+
+// ---- periodic functions -------------------------------------------------------
+
+Interval sin_rev(const Interval& c, const Interval& x) {
+  const Interval cc = intersect(c, Interval(-1.0, 1.0));
+  if (cc.is_empty() || x.is_empty()) return Interval::empty();
+  if (cc.lo() == -1.0 && cc.hi() == 1.0) return x;
+  if (x.is_entire()) return x;
+  const Interval a1 = asin_enclosure(cc.lo()), a2 = asin_enclosure(cc.hi());
+  const Interval pi = Interval::pi();
+  const PeriodicPiece pieces[] = {{a1, a2}, {pi - a2, pi - a1}};
+  if (x.lo() == -kInf || x.hi() == kInf) {
+    // Unbounded on one side: solutions reach that side; contract the finite end.
+    const Interval finite_end = x.lo() == -kInf ? Interval(x.hi() - 8.0, x.hi()) : Interval(x.lo(), x.lo() + 8.0);
+    const Interval near_end = periodic_hull(intersect(finite_end, x), pieces, Interval::two_pi());
+    return x.lo() == -kInf ? Interval(-kInf, near_end.hi()) : Interval(near_end.lo(), kInf);
+  }
+  return periodic_hull(x, pieces, Interval::two_pi());
+}
+
+Interval cos_rev(const Interval& c, const Interval& x) {
+  const Interval cc = intersect(c, Interval(-1.0, 1.0));
+  if (cc.is_empty() || x.is_empty()) return Interval::empty();
+  if (cc.lo() == -1.0 && cc.hi() == 1.0) return x;
+  if (x.is_entire()) return x;
+  const Interval a1 = acos_enclosure(cc.hi()), a2 = acos_enclosure(cc.lo());  // a1 <= a2
+  const PeriodicPiece pieces[] = {{a1, a2}, {-a2, -a1}};
+  if (x.lo() == -kInf || x.hi() == kInf) {
+    const Interval finite_end = x.lo() == -kInf ? Interval(x.hi() - 8.0, x.hi()) : Interval(x.lo(), x.lo() + 8.0);
+    const Interval near_end = periodic_hull(intersect(finite_end, x), pieces, Interval::two_pi());
+    return x.lo() == -kInf ? Interval(-kInf, near_end.hi()) : Interval(near_end.lo(), kInf);
+  }
+  return periodic_hull(x, pieces, Interval::two_pi());
+}
+
+Interval tan_rev(const Interval& c, const Interval& x) {
+  if (c.is_empty() || x.is_empty()) return Interval::empty();
+  if (c.is_entire() || x.is_entire()) return x;
+  const PeriodicPiece pieces[] = {{atan_enclosure(c.lo()), atan_enclosure(c.hi())}};
+  if (x.lo() == -kInf || x.hi() == kInf) {
+    const Interval finite_end = x.lo() == -kInf ? Interval(x.hi() - 4.0, x.hi()) : Interval(x.lo(), x.lo() + 4.0);
+    const Interval near_end = periodic_hull(intersect(finite_end, x), pieces, Interval::pi());
+    return x.lo() == -kInf ? Interval(-kInf, near_end.hi()) : Interval(near_end.lo(), kInf);
+  }
+  return periodic_hull(x, pieces, Interval::pi());
+}
+
+bool bwd_sin(const Interval& y, Interval& x) {
+  if (!narrow(x, sin_rev(y, x))) return fail(x);
+  return true;
+}
+bool bwd_cos(const Interval& y, Interval& x) {
+  if (!narrow(x, cos_rev(y, x))) return fail(x);
+  return true;
+}
+bool bwd_tan(const Interval& y, Interval& x) {
+  if (!narrow(x, tan_rev(y, x))) return fail(x);
+  return true;
+}
+
+bool bwd_atan(const Interval& y, Interval& x) {
+  const Interval half_pi = Interval::half_pi();
+  const Interval range = intersect(y, Interval(-half_pi.hi(), half_pi.hi()));
+  if (range.is_empty()) return fail(x);
+  // atan is increasing: x lies between the tangents of the end points of y,
+  // unbounded where y reaches +-pi/2.
+  const double lo = range.lo() <= -half_pi.lo() ? -kInf : tan(Interval(range.lo())).lo();
+  const double hi = range.hi() >= half_pi.lo() ? kInf : tan(Interval(range.hi())).hi();
+  if (!narrow(x, Interval(lo, hi))) return fail(x);
+  return true;
+}
+
+bool bwd_atan2(const Interval& theta, Interval& y, Interval& x) {
+  // Split theta by quadrant. In each quadrant the signs of x and y are known and
+  // y = x tan(theta) (away from theta = +-pi/2), x = y cot(theta) (away from 0, +-pi).
+  const Interval pi = Interval::pi(), half_pi = Interval::half_pi();
+  const Interval th = intersect(theta, Interval(-pi.hi(), pi.hi()));
+  if (th.is_empty()) return fail(y, x);
+  struct Quadrant {
+    Interval angles, x_sign, y_sign;
+  };
+  const Quadrant quadrants[] = {
+      {Interval(-pi.hi(), -half_pi.lo()), Interval::neg_reals(), Interval::neg_reals()},
+      {Interval(-half_pi.hi(), 0.0), Interval::pos_reals(), Interval::neg_reals()},
+      {Interval(0.0, half_pi.hi()), Interval::pos_reals(), Interval::pos_reals()},
+      {Interval(half_pi.lo(), pi.hi()), Interval::neg_reals(), Interval::pos_reals()},
+  };
+  Interval new_y = Interval::empty(), new_x = Interval::empty();
+  for (const Quadrant& q : quadrants) {
+    const Interval angles = intersect(th, q.angles);
+    if (angles.is_empty()) continue;
+    Interval qx = intersect(x, q.x_sign), qy = intersect(y, q.y_sign);
+    if (qx.is_empty() || qy.is_empty()) continue;
+    const bool avoids_vertical = !angles.intersects(half_pi) && !angles.intersects(-half_pi);
+    const bool avoids_horizontal = !angles.contains(0.0) && !angles.intersects(pi) && !angles.intersects(-pi);
+    if (avoids_vertical) {
+      const Interval t = tan(angles);
+      if (t.is_bounded()) {
+        if (!qy.intersect_with(qx * t)) continue;
+        if (!qx.intersect_with(mul_rev(t, qy, qx))) continue;
+      }
+    }
+    if (avoids_horizontal) {
+      const Interval cot = cos(angles) / sin(angles);
+      if (cot.is_bounded()) {
+        if (!qx.intersect_with(qy * cot)) continue;
+        if (!qy.intersect_with(mul_rev(cot, qx, qy))) continue;
+      }
+    }
+    if (qx.is_empty() || qy.is_empty()) continue;
+    new_x = hull(new_x, qx);
+    new_y = hull(new_y, qy);
+  }
+  if (new_x.is_empty() || new_y.is_empty()) return fail(y, x);
+  x = new_x;
+  y = new_y;
+  return true;
+}
+
+}  // namespace gesmi

@@ -1,0 +1,66 @@
+#pragma once
+// A mission's measurements as flat arrays on one time grid (structure of arrays).
+// Built and validated by io/ (and by the simulator); solver/ only reads it.
+//
+// Invariants (checked by io/ before a Mission reaches the solver):
+//  - nav arrays all have the length of `time`, which is strictly increasing;
+//  - every value is finite; marks lie within [time.front(), time.back()];
+//  - the optional half-width arrays are empty or have the length of `time`;
+//  - truth arrays are empty or complete.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "solver/mission/sensor_model.h"
+
+namespace gesmi {
+
+/// Local NED frame origin (WGS84 degrees).
+struct GeoOrigin {
+  double latitude = 0.0;
+  double longitude = 0.0;
+};
+
+/// Per-sample half-widths that override the model's bounds (GESMI text logs give them).
+struct NavHalfWidths {
+  std::vector<double> roll, pitch, heading, vx, vy, vz, depth, altitude;
+  bool empty() const { return roll.empty(); }
+};
+
+struct Mission {
+  // Navigation, N samples.
+  std::vector<double> time;                  // s, strictly increasing
+  std::vector<double> roll, pitch, heading;  // rad (gyrocompass)
+  std::vector<double> vx, vy, vz;            // m/s, DVL, body frame (x forward, y starboard, z down)
+  std::vector<double> altitude;              // m above the sea floor (DVL)
+  std::vector<double> depth;                 // m (barometer)
+  NavHalfWidths half_widths;                 // optional overrides
+
+  // GPS fixes, G samples.
+  std::vector<double> gps_time;       // s
+  std::vector<double> gps_longitude;  // deg WGS84
+  std::vector<double> gps_latitude;   // deg WGS84
+
+  // Mark table, M detections.
+  std::vector<double> mark_time;        // s
+  std::vector<std::int32_t> mark_mine;  // mine index, -1 when not associated
+  std::vector<double> mark_range;       // slant range, m
+  std::vector<std::int32_t> mark_side;  // +1 starboard, -1 port
+
+  // Number of mines K (mine indices are 0..K-1).
+  int mine_count = 0;
+
+  GeoOrigin origin;
+  SensorModel model;
+
+  // Ground truth of simulated missions (empty otherwise).
+  std::vector<double> truth_x, truth_y, truth_z;  // local NED, m, N samples
+  std::vector<double> truth_mines;                // K×3 row-major, local NED, m
+
+  std::size_t size() const { return time.size(); }
+  std::size_t mark_count() const { return mark_time.size(); }
+  bool has_truth() const { return !truth_x.empty(); }
+};
+
+}  // namespace gesmi

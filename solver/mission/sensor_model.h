@@ -1,0 +1,48 @@
+#pragma once
+// Sensor error bounds in the form of seed 001 (section V-B), with the reference
+// mission's values as defaults (../shared/reference/redermor.md). Stored with every
+// mission and readable from YAML (docs/formats.md documents each key).
+
+#include <string>
+
+namespace gesmi {
+
+enum class SonarSide : int { port = -1, both = 0, starboard = 1 };
+
+struct SensorModel {
+  // DVL body-frame speed, per component: true value in v ± (dvl_relative·|v| + dvl_absolute).
+  double dvl_relative = 0.004;
+  double dvl_absolute = 0.004;  // m/s
+  // Gyrocompass: roll, pitch, heading ± bound (rad).
+  double roll = 1.75e-4;
+  double pitch = 1.75e-4;
+  double heading = 5.27e-3;
+  // Barometer: depth in d ± (depth_absolute + depth_relative·|d|) (m).
+  double depth_absolute = 1.5;
+  double depth_relative = 0.2;
+  // DVL altitude ± bound (m).
+  double altitude = 0.10;
+  // GPS fix: ± in degrees of longitude and latitude, and a metric bound; the box
+  // used is the larger of the two after conversion to the local frame.
+  double gps_lon_deg = 1.35e-5;
+  double gps_lat_deg = 9.0e-6;
+  double gps_metres = 2.5;
+  // Operator mark: slant range ± bound (m).
+  double mark_range = 1.0;
+  // Mine depth m_z = altitude + depth + s with |s| <= mine_depth_band (bottom slope
+  // times swath: 0.01 × 75 m). Altitude and depth keep their own bounds.
+  double mine_depth_band = 0.75;
+  // Side-scan sonar.
+  SonarSide sonar_side = SonarSide::starboard;
+  double sonar_max_range = 75.0;      // m
+  double along_track_tolerance = 1.0; // m: |i_r·e| <= this at the mark time
+  // Bounds on how fast the true values change between two samples, which make a
+  // box valid over a whole step (docs/model.md): the simulator honours them.
+  double max_attitude_rate = 0.05;  // rad/s, roll, pitch and heading
+  double max_acceleration = 0.2;    // m/s², each DVL component
+
+  /// Empty when every bound is finite and non-negative; otherwise the reason.
+  std::string validate() const;
+};
+
+}  // namespace gesmi

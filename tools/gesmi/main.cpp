@@ -1,0 +1,67 @@
+// gesmi: guaranteed estimation of seamarks with intervals. Dispatches to subcommands.
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "io/format_error.h"
+#include "tools/gesmi/command.h"
+
+namespace gesmi::cli {
+
+std::vector<Command>& registry() {
+  static std::vector<Command> all;
+  return all;
+}
+bool register_command(const Command& command) {
+  registry().push_back(command);
+  return true;
+}
+const std::vector<Command>& commands() { return registry(); }
+
+namespace {
+
+void print_help() {
+  std::printf("gesmi - guaranteed estimation of seamarks with intervals\n\nusage: gesmi <command> [options]\n\ncommands:\n");
+  std::vector<Command> sorted = commands();
+  std::sort(sorted.begin(), sorted.end(), [](const Command& a, const Command& b) { return a.name < b.name; });
+  for (const Command& c : sorted)
+    std::printf("  %-12.*s %.*s\n", static_cast<int>(c.name.size()), c.name.data(), static_cast<int>(c.summary.size()),
+                c.summary.data());
+  std::printf("\n'gesmi <command> --help' describes a command. Exit codes: 0 ok, 2 bad input, 3 inconsistent data.\n");
+}
+
+}  // namespace
+}  // namespace gesmi::cli
+
+int main(int argc, char** argv) {
+  using namespace gesmi::cli;
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    print_help();
+    return args.empty() ? kExitBadInput : kExitOk;
+  }
+  const auto& all = commands();
+  const auto found = std::find_if(all.begin(), all.end(), [&](const Command& c) { return c.name == args[0]; });
+  if (found == all.end()) {
+    std::fprintf(stderr, "gesmi: unknown command '%s'; 'gesmi --help' lists the commands\n", args[0].c_str());
+    return kExitBadInput;
+  }
+  try {
+    return found->run(std::span<const std::string>(args).subspan(1));
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "gesmi %s: %s\n", args[0].c_str(), e.what());
+    return kExitBadInput;
+  } catch (const gesmi::io::FormatError& e) {
+    std::fprintf(stderr, "gesmi %s: %s\n", args[0].c_str(), e.what());
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "gesmi %s: out of memory\n", args[0].c_str());
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "gesmi %s: internal error: %s (please report it)\n", args[0].c_str(), e.what());
+    return kExitInternal;
+  }
+}

@@ -1,0 +1,19 @@
+#!/bin/sh
+# Installs gesmi's build and test dependencies from Debian 12 packages.
+# Idempotent: packages already present are left alone; runs apt only when something is missing.
+set -eu
+packages="build-essential cmake pkg-config
+ libeigen3-dev libboost-dev libboost-program-options-dev
+ libhdf5-dev hdf5-tools libgeographiclib-dev libyaml-cpp-dev libcairo2-dev
+ libgtest-dev libgmock-dev libbenchmark-dev libmpfi-dev libmpfr-dev libgmp-dev
+ python3 python3-numpy python3-h5py python3-matplotlib"
+missing=""
+for p in $packages; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+echo "installing:$missing" >&2
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing >/dev/null
