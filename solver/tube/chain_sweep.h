@@ -1,0 +1,36 @@
+#pragma once
+// Sweeps of a chain x(k+1) = x(k) + v(k) over flat arrays: the innermost loop of
+// the mission solver (one chain per axis) and of the 1-D benchmark.
+//
+// Two implementations with the same contract:
+//  - chain_*_portable: Interval operations (round to nearest, then one step out);
+//  - chain_*: a kernel that runs in the upward rounding mode for the duration of
+//    the sweep (chain_sweep_kernel.cpp, compiled with -frounding-math), computing
+//    lower bounds as -((-a) - b). Same enclosure guarantee, tighter by up to one
+//    ulp per operation, and about twice as fast because the loop-carried
+//    dependency has no bit manipulation (docs/intervals.md, docs/performance.md).
+// The rounding mode is restored before returning; nothing else runs meanwhile.
+
+#include <cstddef>
+#include <span>
+
+#include "solver/interval/interval.h"
+
+namespace gesmi {
+
+/// Result of a sweep: the first index whose domain became empty, if any.
+struct SweepResult {
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::size_t first_empty = kNone;
+  bool consistent() const { return first_empty == kNone; }
+};
+
+/// Forward: x(k+1) := x(k+1) ∩ (x(k) + v(k)) for k = 0 .. n-2 (v has n-1 entries).
+SweepResult chain_forward(std::span<Interval> x, std::span<const Interval> v);
+/// Backward: x(k) := x(k) ∩ (x(k+1) - v(k)) then v(k) := v(k) ∩ (x(k+1) - x(k)), k = n-2 .. 0.
+SweepResult chain_backward(std::span<Interval> x, std::span<Interval> v);
+
+SweepResult chain_forward_portable(std::span<Interval> x, std::span<const Interval> v);
+SweepResult chain_backward_portable(std::span<Interval> x, std::span<Interval> v);
+
+}  // namespace gesmi

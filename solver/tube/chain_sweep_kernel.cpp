@@ -1,0 +1,89 @@
+// Upward-rounding sweep kernels. This file is compiled with -frounding-math (see
+// solver/CMakeLists.txt) so that the compiler neither folds nor reorders floating
+// point operations under a round-to-nearest assumption. The loops are in separate
+// non-inlined functions, so every load and store of the arrays (hence every
+// operation on them) happens between the two mode switches.
+//
+// In upward mode a + b and a - b are rounded up; a lower bound RD(a + b) is
+// obtained exactly as -((-a) - b). Intersection is max/min of the bounds; an
+// empty result (lo > hi) stops the sweep and is normalised by the caller.
+
+#include <algorithm>
+#include <cfenv>
+
+#include "solver/tube/chain_sweep.h"
+
+namespace gesmi {
+namespace {
+
+class UpwardRounding {
+ public:
+  UpwardRounding() : saved_(std::fegetround()) { std::fesetround(FE_UPWARD); }
+  ~UpwardRounding() { std::fesetround(saved_); }
+  UpwardRounding(const UpwardRounding&) = delete;
+  UpwardRounding& operator=(const UpwardRounding&) = delete;
+
+ private:
+  int saved_;
+};
+
+// The loop-carried values are the negated lower bound and the upper bound, so the
+// dependency chain is one rounded-up addition and one min per step.
+[[gnu::noinline]] std::size_t forward_loop(Interval* x, const Interval* v, std::size_t n) {
+  double neg_lo = -x[0].lo(), hi = x[0].hi();
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    neg_lo = std::min(-x[k + 1].lo(), neg_lo - v[k].lo());  // -max(lo', RD(lo + v.lo))
+    hi = std::min(x[k + 1].hi(), hi + v[k].hi());           // min(hi', RU(hi + v.hi))
+    x[k + 1] = Interval::from_bounds(-neg_lo, hi);
+    if (!(-neg_lo <= hi)) return k + 1;
+  }
+  return SweepResult::kNone;
+}
+
+[[gnu::noinline]] std::size_t backward_loop(Interval* x, Interval* v, std::size_t n) {
+  double neg_lo = -x[n - 1].lo(), hi = x[n - 1].hi();
+  for (std::size_t k = n - 1; k-- > 0;) {
+    const double next_neg_lo = neg_lo, next_hi = hi;
+    neg_lo = std::min(-x[k].lo(), next_neg_lo + v[k].hi());  // -max(lo, RD(next.lo - v.hi))
+    hi = std::min(x[k].hi(), next_hi - v[k].lo());           // min(hi, RU(next.hi - v.lo))
+    x[k] = Interval::from_bounds(-neg_lo, hi);
+    const double step_lo = std::max(v[k].lo(), -(hi + next_neg_lo));  // RD(next.lo - hi)
+    const double step_hi = std::min(v[k].hi(), next_hi + neg_lo);      // RU(next.hi - lo)
+    v[k] = Interval::from_bounds(step_lo, step_hi);
+    if (!(-neg_lo <= hi) || !(step_lo <= step_hi)) return k;
+  }
+  return SweepResult::kNone;
+}
+
+void normalize_at(std::span<Interval> x, std::span<Interval> v, std::size_t k) {
+  if (k == SweepResult::kNone) return;
+  if (k < x.size() && x[k].is_empty()) x[k] = Interval::empty();
+  if (k < v.size() && v[k].is_empty()) v[k] = Interval::empty();
+}
+
+}  // namespace
+
+SweepResult chain_forward(std::span<Interval> x, std::span<const Interval> v) {
+  if (x.size() < 2) return {};
+  if (x[0].is_empty()) return SweepResult{0};
+  std::size_t first_empty;
+  {
+    UpwardRounding upward;
+    first_empty = forward_loop(x.data(), v.data(), x.size());
+  }
+  normalize_at(x, {}, first_empty);
+  return SweepResult{first_empty};
+}
+
+SweepResult chain_backward(std::span<Interval> x, std::span<Interval> v) {
+  if (x.size() < 2) return {};
+  std::size_t first_empty;
+  {
+    UpwardRounding upward;
+    first_empty = backward_loop(x.data(), v.data(), x.size());
+  }
+  normalize_at(x, v, first_empty);
+  return SweepResult{first_empty};
+}
+
+}  // namespace gesmi

@@ -1,0 +1,26 @@
+#pragma once
+// Runs a built executable (e.g. build/bin/gesmi) from a test and captures its exit
+// code, standard output and standard error.
+
+#include <string>
+#include <vector>
+
+namespace gesmi::test {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+/// Runs GESMI_BIN_DIR/<program> with the arguments (each quoted for the shell).
+CommandResult run_program(const std::string& program, const std::vector<std::string>& args);
+inline CommandResult run_gesmi(const std::vector<std::string>& args) { return run_program("gesmi", args); }
+
+/// A fresh empty temporary folder, removed at the end of the test program.
+std::string temp_folder(const std::string& tag);
+
+/// Number of lines of s (a final line without newline counts).
+int line_count(const std::string& s);
+
+}  // namespace gesmi::test
