@@ -14,6 +14,11 @@
 
 namespace gesmi {
 
+/// Makes every component of the box empty: the normal form of "no solution".
+inline void set_empty(Box& box) {
+  for (Interval& x : box) x = Interval::empty();
+}
+
 template <class C>
 concept Contractor = requires(const C& c, Box& box) {
   { c.contract(box) } -> std::same_as<void>;

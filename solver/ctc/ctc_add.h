@@ -15,13 +15,10 @@ class CtcAdd {
     Interval& s = box[static_cast<std::size_t>(sum_)];
     Interval& a = box[static_cast<std::size_t>(a_)];
     Interval& b = box[static_cast<std::size_t>(b_)];
-    if (!s.intersect_with(a + b) || !bwd_add(s, a, b)) normalize_empty_all(box);
+    if (!s.intersect_with(a + b) || !bwd_add(s, a, b)) set_empty(box);
   }
 
  private:
-  static void normalize_empty_all(Box& box) {
-    for (Interval& x : box) x = Interval::empty();
-  }
   int sum_, a_, b_;
 };
 

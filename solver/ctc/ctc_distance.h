@@ -6,6 +6,7 @@
 #include <array>
 
 #include "solver/interval/interval.h"
+#include "solver/ctc/ctc.h"
 #include "solver/interval/interval_reverse.h"
 
 namespace gesmi {
@@ -44,14 +45,13 @@ template <std::size_t D>
 class CtcDistance {
  public:
   CtcDistance(int z, std::array<int, D> a, std::array<int, D> b) : z_(z), a_(a), b_(b) {}
-  void contract(std::vector<Interval>& box) const {
+  void contract(Box& box) const {
     std::array<Interval*, D> a, b;
     for (std::size_t i = 0; i < D; ++i) {
       a[i] = &box[static_cast<std::size_t>(a_[i])];
       b[i] = &box[static_cast<std::size_t>(b_[i])];
     }
-    if (!contract_distance<D>(box[static_cast<std::size_t>(z_)], a, b))
-      for (Interval& x : box) x = Interval::empty();
+    if (!contract_distance<D>(box[static_cast<std::size_t>(z_)], a, b)) set_empty(box);
   }
 
  private:

@@ -14,7 +14,7 @@ void CtcFwdBwd::contract(Box& box) const {
   }
   tape_->forward(box, values_);
   if (!values_.back().intersect_with(image_)) {
-    normalize_empty(box);
+    set_empty(box);
     return;
   }
   tape_->backward(values_, box);

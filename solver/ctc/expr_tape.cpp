@@ -2,6 +2,7 @@
 
 #include <unordered_map>
 
+#include "solver/ctc/ctc.h"
 #include "solver/interval/interval_reverse.h"
 
 namespace gesmi {
@@ -100,13 +101,13 @@ bool ExprTape::backward(std::span<Interval> values, Box& box) const {
   for (std::size_t i = entries_.size(); i-- > 0;) {
     const Entry& e = entries_[i];
     if (values[i].is_empty()) {
-      for (Interval& x : box) x = Interval::empty();
+      set_empty(box);
       return false;
     }
     if (e.op == ExprOp::variable) {
       Interval& x = box[static_cast<std::size_t>(e.index)];
       if (!x.intersect_with(values[i])) {
-        for (Interval& y : box) y = Interval::empty();
+        set_empty(box);
         return false;
       }
       continue;
@@ -116,7 +117,7 @@ bool ExprTape::backward(std::span<Interval> values, Box& box) const {
     Interval& a = values[static_cast<std::size_t>(e.a)];
     Interval& b = e.b >= 0 ? values[static_cast<std::size_t>(e.b)] : unused;
     if (!backward_op(e, values[i], a, b)) {
-      for (Interval& x : box) x = Interval::empty();
+      set_empty(box);
       return false;
     }
   }

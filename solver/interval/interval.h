@@ -35,7 +35,7 @@ class Interval {
   static constexpr Interval two_pi() { return from_bounds(0x1.921fb54442d18p+2, 0x1.921fb54442d19p+2); }
   static constexpr Interval half_pi() { return from_bounds(0x1.921fb54442d18p+0, 0x1.921fb54442d19p+0); }
   /// The interval x +- r (r >= 0), rounded outward.
-  static constexpr Interval around(double x, double r) { return Interval(sub_down(x, r), add_up(x, r)); }
+  static Interval around(double x, double r) { return Interval(sub_down(x, r), add_up(x, r)); }
 
   constexpr double lo() const { return lo_; }
   constexpr double hi() const { return hi_; }
@@ -58,7 +58,7 @@ class Interval {
   }
 
   /// Width hi - lo rounded up (NaN for the empty interval, as IEEE 1788 wid).
-  constexpr double width() const {
+  inline double width() const {
     if (is_empty()) return std::numeric_limits<double>::quiet_NaN();
     return lo_ == hi_ ? 0.0 : sub_up(hi_, lo_);
   }
@@ -73,7 +73,7 @@ class Interval {
     return std::clamp(m, lo_, hi_);
   }
   /// Half width rounded up, such that [mid - rad, mid + rad] contains the interval.
-  constexpr double rad() const {
+  inline double rad() const {
     if (is_empty()) return std::numeric_limits<double>::quiet_NaN();
     if (lo_ == hi_) return 0.0;
     const double m = mid();
@@ -96,10 +96,10 @@ class Interval {
   }
 
   constexpr Interval operator-() const { return is_empty() ? empty() : from_bounds(-hi_, -lo_); }
-  constexpr Interval& operator+=(const Interval& y);
-  constexpr Interval& operator-=(const Interval& y);
-  constexpr Interval& operator*=(const Interval& y);
-  constexpr Interval& operator/=(const Interval& y);
+  inline Interval& operator+=(const Interval& y);
+  inline Interval& operator-=(const Interval& y);
+  inline Interval& operator*=(const Interval& y);
+  inline Interval& operator/=(const Interval& y);
 
   /// Builds an interval from bounds already known to satisfy the invariants.
   static constexpr Interval from_bounds(double lo, double hi) {
@@ -131,16 +131,16 @@ constexpr Interval hull(const Interval& x, double y) { return hull(x, Interval(y
 
 // ---- arithmetic -------------------------------------------------------------
 
-constexpr Interval operator+(const Interval& x, const Interval& y) {
+inline Interval operator+(const Interval& x, const Interval& y) {
   if (x.is_empty() || y.is_empty()) return Interval::empty();
   return Interval::from_bounds(add_down(x.lo(), y.lo()), add_up(x.hi(), y.hi()));
 }
-constexpr Interval operator-(const Interval& x, const Interval& y) {
+inline Interval operator-(const Interval& x, const Interval& y) {
   if (x.is_empty() || y.is_empty()) return Interval::empty();
   return Interval::from_bounds(sub_down(x.lo(), y.hi()), sub_up(x.hi(), y.lo()));
 }
 
-constexpr Interval operator*(const Interval& x, const Interval& y) {
+inline Interval operator*(const Interval& x, const Interval& y) {
   if (x.is_empty() || y.is_empty()) return Interval::empty();
   const double a = x.lo(), b = x.hi(), c = y.lo(), d = y.hi();
   if (a >= 0.0) {
@@ -159,7 +159,7 @@ constexpr Interval operator*(const Interval& x, const Interval& y) {
 }
 
 /// Division, IEEE 1788 semantics: the hull of {x/y : y != 0}; empty when y = [0,0].
-constexpr Interval operator/(const Interval& x, const Interval& y) {
+inline Interval operator/(const Interval& x, const Interval& y) {
   if (x.is_empty() || y.is_empty() || (y.lo() == 0.0 && y.hi() == 0.0)) return Interval::empty();
   const double a = x.lo(), b = x.hi(), c = y.lo(), d = y.hi();
   const bool x_zero = (a == 0.0 && b == 0.0);
@@ -187,22 +187,22 @@ constexpr Interval operator/(const Interval& x, const Interval& y) {
   return Interval::entire();  // 0 strictly inside y
 }
 
-constexpr Interval& Interval::operator+=(const Interval& y) { return *this = *this + y; }
-constexpr Interval& Interval::operator-=(const Interval& y) { return *this = *this - y; }
-constexpr Interval& Interval::operator*=(const Interval& y) { return *this = *this * y; }
-constexpr Interval& Interval::operator/=(const Interval& y) { return *this = *this / y; }
+inline Interval& Interval::operator+=(const Interval& y) { return *this = *this + y; }
+inline Interval& Interval::operator-=(const Interval& y) { return *this = *this - y; }
+inline Interval& Interval::operator*=(const Interval& y) { return *this = *this * y; }
+inline Interval& Interval::operator/=(const Interval& y) { return *this = *this / y; }
 
 // Mixed forms with a double are written out so that `2.0 * x` needs no conversion.
-constexpr Interval operator+(const Interval& x, double y) { return x + Interval(y); }
-constexpr Interval operator+(double x, const Interval& y) { return Interval(x) + y; }
-constexpr Interval operator-(const Interval& x, double y) { return x - Interval(y); }
-constexpr Interval operator-(double x, const Interval& y) { return Interval(x) - y; }
-constexpr Interval operator*(const Interval& x, double y) { return x * Interval(y); }
-constexpr Interval operator*(double x, const Interval& y) { return Interval(x) * y; }
-constexpr Interval operator/(const Interval& x, double y) { return x / Interval(y); }
-constexpr Interval operator/(double x, const Interval& y) { return Interval(x) / y; }
+inline Interval operator+(const Interval& x, double y) { return x + Interval(y); }
+inline Interval operator+(double x, const Interval& y) { return Interval(x) + y; }
+inline Interval operator-(const Interval& x, double y) { return x - Interval(y); }
+inline Interval operator-(double x, const Interval& y) { return Interval(x) - y; }
+inline Interval operator*(const Interval& x, double y) { return x * Interval(y); }
+inline Interval operator*(double x, const Interval& y) { return Interval(x) * y; }
+inline Interval operator/(const Interval& x, double y) { return x / Interval(y); }
+inline Interval operator/(double x, const Interval& y) { return Interval(x) / y; }
 
-constexpr Interval sqr(const Interval& x) {
+inline Interval sqr(const Interval& x) {
   if (x.is_empty()) return Interval::empty();
   const double m = x.mig(), M = x.mag();
   return Interval::from_bounds(std::max(0.0, mul_down(m, m)), mul_up(M, M));
@@ -210,9 +210,8 @@ constexpr Interval sqr(const Interval& x) {
 
 inline Interval sqrt(const Interval& x) {
   if (x.is_empty() || x.hi() < 0.0) return Interval::empty();
-  const double lo = x.lo() <= 0.0 ? 0.0 : std::max(0.0, next_down(std::sqrt(x.lo())));
-  const double hi = x.hi() == kInf ? kInf : next_up(std::sqrt(x.hi()));
-  return Interval::from_bounds(lo, x.hi() == 0.0 ? 0.0 : hi);
+  const double lo = x.lo() <= 0.0 ? 0.0 : sqrt_down(x.lo());
+  return Interval::from_bounds(lo, sqrt_up(x.hi()));
 }
 
 constexpr Interval abs(const Interval& x) {
