@@ -18,10 +18,13 @@
 
 namespace gesmi {
 
-/// Result of a sweep: the first index whose domain became empty, if any.
+/// Result of a sweep: the first index whose domain became empty, if any, and the
+/// largest narrowing of a bound of x (0 when nothing changed, inf when a bound
+/// became finite or the sweep emptied a domain).
 struct SweepResult {
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::size_t first_empty = kNone;
+  double max_shrink = 0.0;
   bool consistent() const { return first_empty == kNone; }
 };
 

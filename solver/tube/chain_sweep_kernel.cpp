@@ -28,30 +28,46 @@ class UpwardRounding {
 };
 
 // The loop-carried values are the negated lower bound and the upper bound, so the
-// dependency chain is one rounded-up addition and one min per step.
-[[gnu::noinline]] std::size_t forward_loop(Interval* x, const Interval* v, std::size_t n) {
+// dependency chain is one rounded-up addition and one min per step. The largest
+// narrowing of a bound is tracked off that chain (a NaN from inf - inf is ignored
+// by std::max's argument order).
+[[gnu::noinline]] std::size_t forward_loop(Interval* x, const Interval* v, std::size_t n, double& max_shrink) {
   double neg_lo = -x[0].lo(), hi = x[0].hi();
+  double shrink = 0.0;
   for (std::size_t k = 0; k + 1 < n; ++k) {
-    neg_lo = std::min(-x[k + 1].lo(), neg_lo - v[k].lo());  // -max(lo', RD(lo + v.lo))
-    hi = std::min(x[k + 1].hi(), hi + v[k].hi());           // min(hi', RU(hi + v.hi))
+    const Interval old = x[k + 1];
+    neg_lo = std::min(-old.lo(), neg_lo - v[k].lo());  // -max(lo', RD(lo + v.lo))
+    hi = std::min(old.hi(), hi + v[k].hi());           // min(hi', RU(hi + v.hi))
     x[k + 1] = Interval::from_bounds(-neg_lo, hi);
-    if (!(-neg_lo <= hi)) return k + 1;
+    shrink = std::max(shrink, std::max(-neg_lo - old.lo(), old.hi() - hi));
+    if (!(-neg_lo <= hi)) {
+      max_shrink = kInf;
+      return k + 1;
+    }
   }
+  max_shrink = shrink;
   return SweepResult::kNone;
 }
 
-[[gnu::noinline]] std::size_t backward_loop(Interval* x, Interval* v, std::size_t n) {
+[[gnu::noinline]] std::size_t backward_loop(Interval* x, Interval* v, std::size_t n, double& max_shrink) {
   double neg_lo = -x[n - 1].lo(), hi = x[n - 1].hi();
+  double shrink = 0.0;
   for (std::size_t k = n - 1; k-- > 0;) {
     const double next_neg_lo = neg_lo, next_hi = hi;
-    neg_lo = std::min(-x[k].lo(), next_neg_lo + v[k].hi());  // -max(lo, RD(next.lo - v.hi))
-    hi = std::min(x[k].hi(), next_hi - v[k].lo());           // min(hi, RU(next.hi - v.lo))
+    const Interval old = x[k];
+    neg_lo = std::min(-old.lo(), next_neg_lo + v[k].hi());  // -max(lo, RD(next.lo - v.hi))
+    hi = std::min(old.hi(), next_hi - v[k].lo());           // min(hi, RU(next.hi - v.lo))
     x[k] = Interval::from_bounds(-neg_lo, hi);
+    shrink = std::max(shrink, std::max(-neg_lo - old.lo(), old.hi() - hi));
     const double step_lo = std::max(v[k].lo(), -(hi + next_neg_lo));  // RD(next.lo - hi)
     const double step_hi = std::min(v[k].hi(), next_hi + neg_lo);      // RU(next.hi - lo)
     v[k] = Interval::from_bounds(step_lo, step_hi);
-    if (!(-neg_lo <= hi) || !(step_lo <= step_hi)) return k;
+    if (!(-neg_lo <= hi) || !(step_lo <= step_hi)) {
+      max_shrink = kInf;
+      return k;
+    }
   }
+  max_shrink = shrink;
   return SweepResult::kNone;
 }
 
@@ -65,25 +81,25 @@ void normalize_at(std::span<Interval> x, std::span<Interval> v, std::size_t k) {
 
 SweepResult chain_forward(std::span<Interval> x, std::span<const Interval> v) {
   if (x.size() < 2) return {};
-  if (x[0].is_empty()) return SweepResult{0};
-  std::size_t first_empty;
+  if (x[0].is_empty()) return SweepResult{0, kInf};
+  SweepResult result;
   {
     UpwardRounding upward;
-    first_empty = forward_loop(x.data(), v.data(), x.size());
+    result.first_empty = forward_loop(x.data(), v.data(), x.size(), result.max_shrink);
   }
-  normalize_at(x, {}, first_empty);
-  return SweepResult{first_empty};
+  normalize_at(x, {}, result.first_empty);
+  return result;
 }
 
 SweepResult chain_backward(std::span<Interval> x, std::span<Interval> v) {
   if (x.size() < 2) return {};
-  std::size_t first_empty;
+  SweepResult result;
   {
     UpwardRounding upward;
-    first_empty = backward_loop(x.data(), v.data(), x.size());
+    result.first_empty = backward_loop(x.data(), v.data(), x.size(), result.max_shrink);
   }
-  normalize_at(x, v, first_empty);
-  return SweepResult{first_empty};
+  normalize_at(x, v, result.first_empty);
+  return result;
 }
 
 }  // namespace gesmi
