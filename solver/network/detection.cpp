@@ -1,0 +1,59 @@
+#include "solver/network/detection.h"
+
+#include "solver/ctc/ctc_distance.h"
+
+namespace gesmi {
+
+Interval box_distance(const Vec3I& a, const Vec3I& b) {
+  return sqrt(sqr(a[0] - b[0]) + sqr(a[1] - b[1]) + sqr(a[2] - b[2]));
+}
+
+Vec3I Detection::body_prior() const {
+  const Interval across = side > 0 ? Interval::neg_reals() : Interval::pos_reals();
+  return Vec3I(Interval(-along_tolerance, along_tolerance), across, Interval::neg_reals());
+}
+
+namespace {
+
+bool narrow(Vec3I& x, const Vec3I& by) {
+  for (int i = 0; i < 3; ++i)
+    if (!x[i].intersect_with(by[i])) return false;
+  return true;
+}
+
+double largest_change(const Vec3I& before, const Vec3I& after) {
+  double change = 0.0;
+  for (int i = 0; i < 3; ++i)
+    change = std::max({change, after[i].lo() - before[i].lo(), before[i].hi() - after[i].hi()});
+  return change;
+}
+
+}  // namespace
+
+bool Detection::contract(Vec3I& q, Vec3I& m) const {
+  const Vec3I prior = body_prior();
+  const Interval vertical = -(altitude + Interval(-depth_band, depth_band));  // e.z = p_z - m_z
+  Interval zero_x(0.0), zero_y(0.0), zero_z(0.0);
+  Interval r = range;
+  bool ok = true;
+  // A few rounds reach the local fixpoint: each round uses what the other frame
+  // learnt. Stop early when nothing moves by more than a micrometre.
+  for (int round = 0; ok && round < 4; ++round) {
+    const Vec3I q_before = q, m_before = m;
+    Vec3I e(q[0] - m[0], q[1] - m[1], q[2] - m[2]);
+    ok = e[2].intersect_with(vertical);
+    ok = ok && contract_distance<3>(r, {&e[0], &e[1], &e[2]}, {&zero_x, &zero_y, &zero_z});
+    Vec3I eb = world_to_body(attitude, e);
+    ok = ok && narrow(eb, prior);
+    ok = ok && contract_distance<3>(r, {&eb[0], &eb[1], &eb[2]}, {&zero_x, &zero_y, &zero_z});
+    ok = ok && narrow(e, body_to_world(attitude, eb));
+    for (int i = 0; ok && i < 3; ++i) ok = bwd_sub(e[i], q[i], m[i]);
+    if (ok && largest_change(q_before, q) < 1e-6 && largest_change(m_before, m) < 1e-6) break;
+  }
+  if (!ok) {
+    for (int i = 0; i < 3; ++i) q[i] = m[i] = Interval::empty();
+  }
+  return ok;
+}
+
+}  // namespace gesmi

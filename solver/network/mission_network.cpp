@@ -1,0 +1,68 @@
+#include "solver/network/mission_network.h"
+
+#include <algorithm>
+
+namespace gesmi {
+
+MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes) {
+  const SensorBoxes boxes(mission, model);
+  MissionNetwork net;
+  net.time = mission.time;
+  net.mine_count = mission.mine_count;
+  for (const PositionFix& fix : fixes) net.anchors.push_back({fix, TimeLocation::locate(mission.time, fix.time, boxes)});
+  std::sort(net.anchors.begin(), net.anchors.end(), [](const Anchor& a, const Anchor& b) { return a.fix.time < b.fix.time; });
+
+  for (std::size_t j = 0; j < mission.mark_count(); ++j) {
+    if (mission.mark_mine[j] < 0) {
+      net.unassociated_marks.push_back(j);
+      continue;
+    }
+    Detection d;
+    d.mark = j;
+    d.time = mission.mark_time[j];
+    d.mine = mission.mark_mine[j];
+    d.measured_range = mission.mark_range[j];
+    d.side = mission.mark_side[j];
+    d.at = TimeLocation::locate(mission.time, d.time, boxes);
+    if (d.at.on_grid) {
+      d.attitude = make_attitude(boxes.roll(d.at.k), boxes.pitch(d.at.k), boxes.heading(d.at.k));
+      d.altitude = boxes.altitude(d.at.k);
+    } else {
+      d.attitude = boxes.step_attitude(d.at.k);
+      d.altitude = boxes.step_altitude(d.at.k);
+    }
+    d.range = intersect(Interval::around(d.measured_range, model.mark_range), Interval::pos_reals());
+    d.along_tolerance = model.along_track_tolerance;
+    d.depth_band = model.mine_depth_band;
+    net.detections.push_back(d);
+  }
+  std::stable_sort(net.detections.begin(), net.detections.end(),
+                   [](const Detection& a, const Detection& b) { return a.time < b.time; });
+  return net;
+}
+
+TubeDomains initial_domains(const Mission& mission, const SensorModel& model, const MissionNetwork& network) {
+  const SensorBoxes boxes(mission, model);
+  const std::size_t n = mission.size();
+  TubeDomains d;
+  d.px.assign(n, Interval::entire());
+  d.py.assign(n, Interval::entire());
+  d.pz.resize(n);
+  d.dx.resize(n > 0 ? n - 1 : 0);
+  d.dy.resize(d.dx.size());
+  d.dz.resize(d.dx.size());
+  for (std::size_t k = 0; k < n; ++k) d.pz[k] = boxes.depth(k);
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    const Vec3I inc = boxes.step_increment(k);
+    d.dx[k] = inc[0];
+    d.dy[k] = inc[1];
+    d.dz[k] = inc[2];
+  }
+  for (const Anchor& a : network.anchors)
+    if (a.at.on_grid) a.at.narrow(d, a.fix.box);  // an empty result is found again by the solver
+  d.mines.assign(static_cast<std::size_t>(std::max(network.mine_count, 0)),
+                 Vec3I(Interval::entire(), Interval::entire(), Interval::entire()));
+  return d;
+}
+
+}  // namespace gesmi

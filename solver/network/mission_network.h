@@ -1,0 +1,48 @@
+#pragma once
+// The constraint network of a mission (seed 001, sections II and IV): the evolution
+// p(k+1) = p(k) + d(k) with d(k) enclosing the integral of R v over the step, the
+// barometer depth, the GPS fixes and the sonar detections. The per-step parts live
+// in TubeDomains (the priors of positions and increments); this holds the sparse
+// constraints.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "solver/mission/mission.h"
+#include "solver/network/detection.h"
+#include "solver/network/sensor_boxes.h"
+#include "solver/network/tube_domains.h"
+
+namespace gesmi {
+
+/// A position fix in the local frame: GPS at the surface after geodesy, or a
+/// position box from a log. Axes without information are the whole line.
+struct PositionFix {
+  double time = 0.0;
+  Vec3I box = Vec3I(Interval::entire(), Interval::entire(), Interval::entire());
+  std::size_t source_index = 0;  // row in the mission's GPS table
+};
+
+struct Anchor {
+  PositionFix fix;
+  TimeLocation at;
+};
+
+struct MissionNetwork {
+  std::span<const double> time;       // the mission's time grid (the mission outlives the network)
+  std::vector<Anchor> anchors;        // in time order
+  std::vector<Detection> detections;  // associated detections, in time order
+  std::vector<std::size_t> unassociated_marks;  // mark rows with mine -1 (not used as constraints)
+  int mine_count = 0;
+};
+
+/// Builds the sparse constraints. Marks with mine -1 are listed, not constrained.
+MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes);
+
+/// The prior domains: increments from the sensors, depth from the barometer,
+/// fixes on sample times, unbounded elsewhere; mines unbounded.
+TubeDomains initial_domains(const Mission& mission, const SensorModel& model, const MissionNetwork& network);
+
+}  // namespace gesmi

@@ -1,0 +1,172 @@
+#include "solver/network/mission_solver.h"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "solver/tube/chain_sweep.h"
+
+namespace gesmi {
+namespace {
+
+const char* const kAxisNames[] = {"north", "east", "down"};
+
+std::string format_interval(const Interval& x) {
+  if (x.is_empty()) return "[empty]";
+  char buffer[80];
+  std::snprintf(buffer, sizeof buffer, "[%.2f, %.2f]", x.lo(), x.hi());
+  return buffer;
+}
+
+std::string format_time(double t) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.1f s", t);
+  return buffer;
+}
+
+double largest_move(const Vec3I& before, const Vec3I& after) {
+  double move = 0.0;
+  for (int i = 0; i < 3; ++i) move = std::max({move, after[i].lo() - before[i].lo(), before[i].hi() - after[i].hi()});
+  return move;
+}
+
+class Propagation {
+ public:
+  Propagation(const MissionNetwork& net, TubeDomains& d) : net_(net), d_(d) {}
+
+  // One forward-backward sweep; returns the largest bound move, or nullopt and
+  // sets the inconsistency when a domain became empty.
+  std::optional<double> sweep(std::optional<Inconsistency>& failure) {
+    double move = 0.0;
+    if (!chains(true, move, failure) || !sparse(move, failure) || !chains(false, move, failure) ||
+        !sparse(move, failure))
+      return std::nullopt;
+    return move;
+  }
+
+ private:
+  std::array<std::vector<Interval>*, 3> positions() { return {&d_.px, &d_.py, &d_.pz}; }
+  std::array<std::vector<Interval>*, 3> increments() { return {&d_.dx, &d_.dy, &d_.dz}; }
+
+
+  bool chains(bool forward, double& move, std::optional<Inconsistency>& failure) {
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<Interval>& p = *positions()[axis];
+      std::vector<Interval>& inc = *increments()[axis];
+      const SweepResult r = forward ? chain_forward(p, inc) : chain_backward(p, inc);
+      if (!r.consistent()) {
+        failure = evolution_failure(axis, r.first_empty, forward);
+        return false;
+      }
+      move = std::max(move, r.max_shrink);
+    }
+    return true;
+  }
+
+  Inconsistency evolution_failure(int axis, std::size_t k, bool forward) {
+    // The chain emptied p(k) (forward: coming from k - 1; backward: from k + 1).
+    Inconsistency inc;
+    inc.kind = Inconsistency::Kind::evolution;
+    inc.step = k;
+    inc.time = net_.time[k];
+    const std::size_t from = forward ? k - 1 : k + 1;
+    std::string what = "the " + std::string(kAxisNames[axis]) + " position at t = " + format_time(inc.time) +
+                       " cannot be reached by dead reckoning from t = " + format_time(net_.time[from]);
+    for (const Anchor& a : net_.anchors)
+      if (a.at.k == k || (!a.at.on_grid && a.at.k + 1 == k))
+        what += "; GPS fix " + std::to_string(a.fix.source_index) + " at t = " + format_time(a.fix.time) + " gives " +
+                std::string(kAxisNames[axis]) + " in " + format_interval(a.fix.box[axis]);
+    if (axis == 2) what += "; the barometer bounds the depth there";
+    what += " (check the DVL, gyrocompass and depth bounds, or an outlier fix)";
+    inc.message = what;
+    return inc;
+  }
+
+  bool sparse(double& move, std::optional<Inconsistency>& failure) {
+    for (const Anchor& a : net_.anchors) {
+      if (a.at.on_grid) continue;  // on the grid the fix is part of the prior and never lost
+      Vec3I q = a.at.position(d_);
+      const Vec3I before = q;
+      bool ok = true;
+      for (int i = 0; ok && i < 3; ++i) ok = q[i].intersect_with(a.fix.box[i]);
+      if (!ok || !a.at.narrow(d_, q)) {
+        Inconsistency inc;
+        inc.kind = Inconsistency::Kind::fix;
+        inc.step = a.at.k;
+        inc.time = a.fix.time;
+        inc.source = a.fix.source_index;
+        inc.message = "GPS fix " + std::to_string(a.fix.source_index) + " at t = " + format_time(a.fix.time) +
+                      " (north " + format_interval(a.fix.box[0]) + ", east " + format_interval(a.fix.box[1]) +
+                      ") is outside the tube there (north " + format_interval(before[0]) + ", east " +
+                      format_interval(before[1]) + ")";
+        failure = inc;
+        return false;
+      }
+      move = std::max(move, largest_move(before, q));
+    }
+    for (const Detection& det : net_.detections) {
+      Vec3I q = det.at.position(d_);
+      Vec3I& m = d_.mines[static_cast<std::size_t>(det.mine)];
+      const Vec3I q_before = q, m_before = m;
+      if (!det.contract(q, m) || !det.at.narrow(d_, q)) {
+        failure = detection_failure(det, q_before, m_before);
+        return false;
+      }
+      move = std::max({move, largest_move(q_before, q), largest_move(m_before, m)});
+    }
+    return true;
+  }
+
+  Inconsistency detection_failure(const Detection& det, const Vec3I& q, const Vec3I& m) const {
+    Inconsistency inc;
+    inc.kind = Inconsistency::Kind::detection;
+    inc.step = det.at.k;
+    inc.time = det.time;
+    inc.source = det.mark;
+    char head[160];
+    std::snprintf(head, sizeof head, "detection %zu at t = %s (mine %d, range %.2f m, %s)", det.mark,
+                  format_time(det.time).c_str(), det.mine, det.measured_range, det.side > 0 ? "starboard" : "port");
+    const Interval distance = box_distance(q, m);
+    std::string why;
+    if (!distance.intersects(det.range))
+      why = ": range " + format_interval(det.range) + " m cannot be reached, the distance from the tube to mine " +
+            std::to_string(det.mine) + " is within " + format_interval(distance) + " m";
+    else
+      why = ": mine " + std::to_string(det.mine) + " cannot lie in the " + (det.side > 0 ? "starboard" : "port") +
+            " sonar plane below the robot at that range (tube north " + format_interval(q[0]) + ", east " +
+            format_interval(q[1]) + "; mine box north " + format_interval(m[0]) + ", east " + format_interval(m[1]) + ")";
+    inc.message = std::string(head) + why;
+    return inc;
+  }
+
+  const MissionNetwork& net_;
+  TubeDomains& d_;
+};
+
+}  // namespace
+
+std::string SolverOptions::validate() const {
+  if (max_sweeps < 1) return "the sweep limit must be at least 1";
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) return "the tolerance must be a finite number >= 0";
+  return {};
+}
+
+SolverReport solve(const MissionNetwork& network, TubeDomains& domains, const SolverOptions& options) {
+  SolverReport report;
+  Propagation propagation(network, domains);
+  while (report.sweeps < options.max_sweeps) {
+    const std::optional<double> move = propagation.sweep(report.inconsistency);
+    ++report.sweeps;
+    if (!move) return report;
+    report.last_move = *move;
+    if (options.on_sweep) options.on_sweep(report.sweeps, *move);
+    if (*move <= options.tolerance) {
+      report.converged = true;
+      return report;
+    }
+  }
+  return report;
+}
+
+}  // namespace gesmi

@@ -1,0 +1,80 @@
+#include "solver/network/sensor_boxes.h"
+
+#include <cmath>
+
+namespace gesmi {
+
+Interval SensorBoxes::reading(const std::vector<double>& values, const std::vector<double>& half_widths,
+                              std::size_t k, double model_bound) const {
+  const double bound = half_widths.empty() ? model_bound : half_widths[k];
+  return Interval::around(values[k], bound);
+}
+
+Interval SensorBoxes::roll(std::size_t k) const { return reading(m_.roll, m_.half_widths.roll, k, model_.roll); }
+Interval SensorBoxes::pitch(std::size_t k) const { return reading(m_.pitch, m_.half_widths.pitch, k, model_.pitch); }
+Interval SensorBoxes::heading(std::size_t k) const {
+  return reading(m_.heading, m_.half_widths.heading, k, model_.heading);
+}
+
+Vec3I SensorBoxes::velocity(std::size_t k) const {
+  // v ± (a |v| + b), the bound rounded up.
+  const auto component = [&](const std::vector<double>& v, const std::vector<double>& hw) {
+    const double bound = add_up(mul_up(model_.dvl_relative, std::fabs(v[k])), model_.dvl_absolute);
+    return reading(v, hw, k, bound);
+  };
+  return Vec3I(component(m_.vx, m_.half_widths.vx), component(m_.vy, m_.half_widths.vy),
+               component(m_.vz, m_.half_widths.vz));
+}
+
+Interval SensorBoxes::depth(std::size_t k) const {
+  const double bound = add_up(model_.depth_absolute, mul_up(model_.depth_relative, std::fabs(m_.depth[k])));
+  return reading(m_.depth, m_.half_widths.depth, k, bound);
+}
+
+Interval SensorBoxes::altitude(std::size_t k) const {
+  return reading(m_.altitude, m_.half_widths.altitude, k, model_.altitude);
+}
+
+Interval SensorBoxes::widen_over_step(const Interval& a, const Interval& b, double rate, std::size_t k) const {
+  const double dt = sub_up(m_.time[k + 1], m_.time[k]);
+  const double excursion = mul_up(rate, mul_up(0.5, dt));
+  const Interval both = hull(a, b);
+  return Interval(sub_down(both.lo(), excursion), add_up(both.hi(), excursion));
+}
+
+Attitude<Interval> SensorBoxes::step_attitude(std::size_t k) const {
+  const double rate = model_.max_attitude_rate;
+  return make_attitude(widen_over_step(roll(k), roll(k + 1), rate, k),
+                       widen_over_step(pitch(k), pitch(k + 1), rate, k),
+                       widen_over_step(heading(k), heading(k + 1), rate, k));
+}
+
+Vec3I SensorBoxes::step_velocity(std::size_t k) const {
+  const Vec3I a = velocity(k), b = velocity(k + 1);
+  const double rate = model_.max_acceleration;
+  return Vec3I(widen_over_step(a[0], b[0], rate, k), widen_over_step(a[1], b[1], rate, k),
+               widen_over_step(a[2], b[2], rate, k));
+}
+
+Interval SensorBoxes::step_altitude(std::size_t k) const {
+  // a = floor depth - p_z changes at most at |v| (1 + slope), with the floor slope
+  // bounded by mine_depth_band / sonar_max_range (the model's flat-floor budget).
+  const Vec3I v = step_velocity(k);
+  const double speed = add_up(add_up(v[0].mag(), v[1].mag()), v[2].mag());
+  const double slope = div_up(model_.mine_depth_band, model_.sonar_max_range);
+  return widen_over_step(altitude(k), altitude(k + 1), mul_up(speed, add_up(1.0, slope)), k);
+}
+
+Vec3I SensorBoxes::step_world_velocity(std::size_t k) const {
+  return body_to_world(step_attitude(k), step_velocity(k));
+}
+
+Vec3I SensorBoxes::step_increment(std::size_t k) const {
+  // Mean value theorem for integrals: the integral over [t_k, t_k+1] of a function
+  // whose values stay in the (convex) box B is in (t_k+1 - t_k) B.
+  const Interval dt = Interval(m_.time[k + 1]) - Interval(m_.time[k]);
+  const Vec3I w = step_world_velocity(k);
+  return Vec3I(dt * w[0], dt * w[1], dt * w[2]);
+}
+
+}  // namespace gesmi

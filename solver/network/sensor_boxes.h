@@ -1,0 +1,48 @@
+#pragma once
+// Sensor readings turned into boxes that contain the true values (seed 001, V-B):
+// at a sample, the reading ± its bound (the mission's per-sample half-width when
+// it gives one, the model's bound otherwise); over a step [t_k, t_k+1], the hull
+// of the boxes at both ends widened by rate_bound · dt / 2, the largest excursion
+// of a quantity whose rate is bounded (docs/model.md).
+
+#include <cstddef>
+
+#include "solver/interval/box.h"
+#include "solver/mission/mission.h"
+#include "solver/model/euler.h"
+
+namespace gesmi {
+
+class SensorBoxes {
+ public:
+  /// The mission must outlive this object (it reads the mission's arrays).
+  SensorBoxes(const Mission& mission, const SensorModel& model) : m_(mission), model_(model) {}
+
+  Interval roll(std::size_t k) const;
+  Interval pitch(std::size_t k) const;
+  Interval heading(std::size_t k) const;
+  Vec3I velocity(std::size_t k) const;  // DVL, body frame
+  Interval depth(std::size_t k) const;
+  Interval altitude(std::size_t k) const;
+
+  /// Boxes valid over the whole step [t_k, t_k+1] (k + 1 < size).
+  Attitude<Interval> step_attitude(std::size_t k) const;
+  Vec3I step_velocity(std::size_t k) const;
+  Interval step_altitude(std::size_t k) const;
+  /// Enclosure of the world-frame velocity R v over the step.
+  Vec3I step_world_velocity(std::size_t k) const;
+  /// Enclosure of the displacement p(k+1) - p(k) = integral of R v over the step.
+  Vec3I step_increment(std::size_t k) const;
+
+  const SensorModel& model() const { return model_; }
+
+ private:
+  Interval reading(const std::vector<double>& values, const std::vector<double>& half_widths, std::size_t k,
+                   double model_bound) const;
+  Interval widen_over_step(const Interval& a, const Interval& b, double rate, std::size_t k) const;
+
+  const Mission& m_;
+  SensorModel model_;
+};
+
+}  // namespace gesmi

@@ -1,0 +1,47 @@
+#include "solver/network/time_location.h"
+
+#include <algorithm>
+
+#include "solver/network/sensor_boxes.h"
+
+namespace gesmi {
+
+TimeLocation TimeLocation::locate(std::span<const double> time, double t, const SensorBoxes& boxes) {
+  TimeLocation at;
+  const auto it = std::lower_bound(time.begin(), time.end(), t);
+  const auto k = static_cast<std::size_t>(it - time.begin());
+  if (it != time.end() && *it == t) {
+    at.k = k;
+    return at;
+  }
+  // time[k - 1] < t < time[k]
+  at.k = k - 1;
+  at.on_grid = false;
+  at.alpha = Interval(t) - Interval(time[k - 1]);
+  at.beta = Interval(time[k]) - Interval(t);
+  at.velocity = boxes.step_world_velocity(k - 1);
+  return at;
+}
+
+Vec3I TimeLocation::position(const TubeDomains& d) const {
+  if (on_grid) return d.position(k);
+  Vec3I q;
+  for (int i = 0; i < 3; ++i) q[i] = intersect(d.position(k)[i] + alpha * velocity[i], d.position(k + 1)[i] - beta * velocity[i]);
+  return q;
+}
+
+bool TimeLocation::narrow(TubeDomains& d, const Vec3I& q) const {
+  std::vector<Interval>* axes[] = {&d.px, &d.py, &d.pz};
+  for (int i = 0; i < 3; ++i) {
+    std::vector<Interval>& p = *axes[i];
+    if (on_grid) {
+      if (!p[k].intersect_with(q[i])) return false;
+    } else {
+      if (!p[k].intersect_with(q[i] - alpha * velocity[i])) return false;
+      if (!p[k + 1].intersect_with(q[i] + beta * velocity[i])) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace gesmi

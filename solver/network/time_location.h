@@ -1,0 +1,32 @@
+#pragma once
+// Where a time t (a GPS fix, a sonar mark) falls on the mission's sample grid.
+// On a sample, the position there is p(k). Between t_k and t_k+1 it is a point
+// q = p(t) with q in p(k) + alpha V and q in p(k+1) - beta V, where alpha = t - t_k,
+// beta = t_k+1 - t and V encloses the world velocity over the step.
+
+#include <cstddef>
+#include <span>
+
+#include "solver/interval/box.h"
+#include "solver/network/tube_domains.h"
+
+namespace gesmi {
+
+class SensorBoxes;
+
+struct TimeLocation {
+  std::size_t k = 0;
+  bool on_grid = true;
+  Interval alpha, beta;  // t - t_k and t_k+1 - t (off grid)
+  Vec3I velocity;        // world velocity over step k (off grid)
+
+  /// t must lie within [time.front(), time.back()].
+  static TimeLocation locate(std::span<const double> time, double t, const SensorBoxes& boxes);
+
+  /// The position domain at this time.
+  Vec3I position(const TubeDomains& d) const;
+  /// Narrows the tube with a contracted position q at this time; false if empty.
+  bool narrow(TubeDomains& d, const Vec3I& q) const;
+};
+
+}  // namespace gesmi

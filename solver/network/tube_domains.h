@@ -1,0 +1,28 @@
+#pragma once
+// The state of the mission network: the domains being contracted. One flat array
+// per axis for the positions p(k) (the tube, N entries) and for the increments
+// d(k) = p(k+1) - p(k) (N - 1 entries), plus one box per mine.
+
+#include <vector>
+
+#include "solver/interval/box.h"
+
+namespace gesmi {
+
+struct TubeDomains {
+  std::vector<Interval> px, py, pz;  // north, east, down (m)
+  std::vector<Interval> dx, dy, dz;  // increments (m)
+  std::vector<Vec3I> mines;          // NED (m)
+
+  std::size_t size() const { return px.size(); }
+  Vec3I position(std::size_t k) const { return Vec3I(px[k], py[k], pz[k]); }
+  void set_position(std::size_t k, const Vec3I& p) {
+    px[k] = p[0];
+    py[k] = p[1];
+    pz[k] = p[2];
+  }
+  /// Largest horizontal width of the tube (max over k of the north and east widths).
+  double max_horizontal_width() const;
+};
+
+}  // namespace gesmi
