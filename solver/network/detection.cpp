@@ -30,11 +30,10 @@ double largest_change(const Vec3I& before, const Vec3I& after) {
 
 }  // namespace
 
-bool Detection::contract(Vec3I& q, Vec3I& m) const {
+bool Detection::contract(Vec3I& q, Vec3I& m, Interval& r) const {
   const Vec3I prior = body_prior();
   const Interval vertical = -(altitude + Interval(-depth_band, depth_band));  // e.z = p_z - m_z
   Interval zero_x(0.0), zero_y(0.0), zero_z(0.0);
-  Interval r = range;
   bool ok = true;
   // A few rounds reach the local fixpoint: each round uses what the other frame
   // learnt. Stop early when nothing moves by more than a micrometre.
@@ -52,6 +51,7 @@ bool Detection::contract(Vec3I& q, Vec3I& m) const {
   }
   if (!ok) {
     for (int i = 0; i < 3; ++i) q[i] = m[i] = Interval::empty();
+    r = Interval::empty();
   }
   return ok;
 }

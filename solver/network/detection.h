@@ -33,7 +33,12 @@ struct Detection {
 
   /// Contracts the position q at the mark time and the mine box m; false when the
   /// constraint has no solution in them (q and m are then left empty).
-  bool contract(Vec3I& q, Vec3I& m) const;
+  bool contract(Vec3I& q, Vec3I& m) const {
+    Interval r = range;
+    return contract(q, m, r);
+  }
+  /// Same, also narrowing the slant range r (in: its domain, out: contracted).
+  bool contract(Vec3I& q, Vec3I& m, Interval& r) const;
   /// The robot-frame box of e allowed by the sonar geometry before any data.
   Vec3I body_prior() const;
 };

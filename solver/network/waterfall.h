@@ -1,0 +1,26 @@
+#pragma once
+// The reconstructed waterfall (seed 001, section V-D, Fig. 8): for each time step
+// and mine, the interval of slant ranges ||e|| at which the mine can appear on the
+// sonar record, i.e. lie in the sonar plane, on the sonar's side, below the robot
+// and within the sonar's range, given the final tube and mine box. Where that is
+// impossible both bounds are NaN.
+
+#include <vector>
+
+#include "solver/mission/mission.h"
+#include "solver/network/tube_domains.h"
+
+namespace gesmi {
+
+struct Waterfall {
+  std::size_t steps = 0, mines = 0;
+  std::vector<double> lower, upper;  // steps x mines, row-major (index k * mines + i)
+
+  double lo(std::size_t k, std::size_t i) const { return lower[k * mines + i]; }
+  double hi(std::size_t k, std::size_t i) const { return upper[k * mines + i]; }
+  bool feasible(std::size_t k, std::size_t i) const { return lower[k * mines + i] == lower[k * mines + i]; }
+};
+
+Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains);
+
+}  // namespace gesmi
