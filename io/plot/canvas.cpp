@@ -1,0 +1,109 @@
+#include "io/plot/canvas.h"
+
+#include <cairo.h>
+
+#include <cmath>
+#include <numbers>
+#include <cstdio>
+
+#include "io/atomic_output.h"
+#include "io/format_error.h"
+
+namespace gesmi::io {
+
+Canvas::Canvas(int width, int height)
+    : surface_(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)), cr_(cairo_create(surface_)) {
+  cairo_set_source_rgb(cr_, 1, 1, 1);
+  cairo_paint(cr_);
+  cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+}
+
+Canvas::~Canvas() {
+  cairo_destroy(cr_);
+  cairo_surface_destroy(surface_);
+}
+
+void Canvas::fill_rect(double x, double y, double w, double h, Rgb c, double alpha) {
+  cairo_set_source_rgba(cr_, c.r, c.g, c.b, alpha);
+  cairo_rectangle(cr_, x, y, w, h);
+  cairo_fill(cr_);
+}
+
+void Canvas::stroke_rect(double x, double y, double w, double h, Rgb c, double line_width) {
+  cairo_set_source_rgb(cr_, c.r, c.g, c.b);
+  cairo_set_line_width(cr_, line_width);
+  cairo_rectangle(cr_, x, y, w, h);
+  cairo_stroke(cr_);
+}
+
+void Canvas::line(double x0, double y0, double x1, double y1, Rgb c, double line_width) {
+  cairo_set_source_rgb(cr_, c.r, c.g, c.b);
+  cairo_set_line_width(cr_, line_width);
+  cairo_move_to(cr_, x0, y0);
+  cairo_line_to(cr_, x1, y1);
+  cairo_stroke(cr_);
+}
+
+void Canvas::dot(double x, double y, double radius, Rgb c) {
+  cairo_set_source_rgb(cr_, c.r, c.g, c.b);
+  cairo_arc(cr_, x, y, radius, 0, 2 * std::numbers::pi);
+  cairo_fill(cr_);
+}
+
+void Canvas::text(double x, double y, const std::string& s, double size, Rgb c, bool centred) {
+  cairo_set_source_rgb(cr_, c.r, c.g, c.b);
+  cairo_set_font_size(cr_, size);
+  if (centred) {
+    cairo_text_extents_t e;
+    cairo_text_extents(cr_, s.c_str(), &e);
+    x -= e.width / 2 + e.x_bearing;
+  }
+  cairo_move_to(cr_, x, y);
+  cairo_show_text(cr_, s.c_str());
+}
+
+double tick_step(double span, int target_ticks) {
+  if (!(span > 0.0) || !std::isfinite(span)) return 1.0;
+  const double raw = span / std::max(target_ticks, 1);
+  const double power = std::pow(10.0, std::floor(std::log10(raw)));
+  for (const double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * power >= raw) return m * power;
+  return 10.0 * power;
+}
+
+void Canvas::axes(const DataFrame& f, const std::string& x_label, const std::string& y_label) {
+  const Rgb black{0, 0, 0}, grey{0.55, 0.55, 0.55};
+  stroke_rect(f.left, f.top, f.width, f.height, black, 1.0);
+  char label[32];
+  const double sx = tick_step(f.x1 - f.x0, 6);
+  for (double x = std::ceil(f.x0 / sx) * sx; x <= f.x1 + 1e-9 * sx; x += sx) {
+    line(f.px(x), f.top + f.height, f.px(x), f.top + f.height + 5, black, 1.0);
+    std::snprintf(label, sizeof label, "%g", x);
+    text(f.px(x), f.top + f.height + 18, label, 11, black, true);
+  }
+  const double sy = tick_step(f.y1 - f.y0, 8);
+  for (double y = std::ceil(f.y0 / sy) * sy; y <= f.y1 + 1e-9 * sy; y += sy) {
+    line(f.left - 5, f.py(y), f.left, f.py(y), black, 1.0);
+    std::snprintf(label, sizeof label, "%g", y);
+    cairo_text_extents_t e;
+    cairo_set_font_size(cr_, 11);
+    cairo_text_extents(cr_, label, &e);
+    text(f.left - 8 - e.width, f.py(y) + 4, label, 11, black);
+  }
+  text(f.left + f.width / 2, f.top + f.height + 36, x_label, 12, grey, true);
+  cairo_save(cr_);
+  cairo_translate(cr_, f.left - 48, f.top + f.height / 2);
+  cairo_rotate(cr_, -std::numbers::pi / 2);
+  text(0, 0, y_label, 12, grey, true);
+  cairo_restore(cr_);
+}
+
+void Canvas::save_png(const std::string& path) {
+  AtomicOutput out(path);
+  cairo_surface_flush(surface_);
+  if (cairo_surface_write_to_png(surface_, out.temp_path().c_str()) != CAIRO_STATUS_SUCCESS)
+    throw FormatError(path + ": cannot write the PNG picture");
+  out.commit();
+}
+
+}  // namespace gesmi::io
