@@ -21,7 +21,11 @@ namespace gesmi {
 struct Detection {
   std::size_t mark = 0;      // row in the mark table
   double time = 0.0;         // s
-  int mine = 0;              // mine index
+  int mine = 0;              // mine index, -1 when the mark table does not say
+  /// Mines this detection may belong to before any propagation (bit i: mine i).
+  /// One bit for an associated detection; for an unassociated one, the mines that
+  /// survive symmetry breaking among unlabelled mines (docs/model.md).
+  std::uint64_t allowed = 0;
   double measured_range = 0.0;
   int side = 1;              // +1 starboard, -1 port
   TimeLocation at;

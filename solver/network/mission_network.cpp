@@ -4,6 +4,35 @@
 
 namespace gesmi {
 
+namespace {
+
+// Candidate mines of each detection before propagation. A labelled detection has
+// its mine. Mines that no detection names are interchangeable, so any solution can
+// be relabelled to use them in order of first detection: the r-th unlabelled mine
+// can only be taken by an unassociated detection with at least r unassociated
+// detections before it. Without this, a '?' could never be decided.
+void assign_allowed_mines(MissionNetwork& net) {
+  const int k = net.mine_count;
+  std::uint64_t labelled = 0;
+  for (const Detection& d : net.detections)
+    if (d.mine >= 0) labelled |= std::uint64_t{1} << d.mine;
+  std::vector<int> unlabelled;
+  for (int i = 0; i < k; ++i)
+    if (!(labelled >> i & 1)) unlabelled.push_back(i);
+  std::size_t earlier = 0;
+  for (Detection& d : net.detections) {
+    if (d.mine >= 0) {
+      d.allowed = std::uint64_t{1} << d.mine;
+      continue;
+    }
+    d.allowed = labelled;
+    for (std::size_t r = 0; r < unlabelled.size() && r <= earlier; ++r) d.allowed |= std::uint64_t{1} << unlabelled[r];
+    ++earlier;
+  }
+}
+
+}  // namespace
+
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes) {
   const SensorBoxes boxes(mission, model);
   MissionNetwork net;
@@ -13,10 +42,6 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
   std::sort(net.anchors.begin(), net.anchors.end(), [](const Anchor& a, const Anchor& b) { return a.fix.time < b.fix.time; });
 
   for (std::size_t j = 0; j < mission.mark_count(); ++j) {
-    if (mission.mark_mine[j] < 0) {
-      net.unassociated_marks.push_back(j);
-      continue;
-    }
     Detection d;
     d.mark = j;
     d.time = mission.mark_time[j];
@@ -38,6 +63,7 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
   }
   std::stable_sort(net.detections.begin(), net.detections.end(),
                    [](const Detection& a, const Detection& b) { return a.time < b.time; });
+  assign_allowed_mines(net);
   return net;
 }
 
@@ -62,6 +88,7 @@ TubeDomains initial_domains(const Mission& mission, const SensorModel& model, co
     if (a.at.on_grid) a.at.narrow(d, a.fix.box);  // an empty result is found again by the solver
   d.mines.assign(static_cast<std::size_t>(std::max(network.mine_count, 0)),
                  Vec3I(Interval::entire(), Interval::entire(), Interval::entire()));
+  for (const Detection& det : network.detections) d.candidates.push_back(det.allowed);
   return d;
 }
 

@@ -33,16 +33,19 @@ struct Anchor {
 struct MissionNetwork {
   std::span<const double> time;       // the mission's time grid (the mission outlives the network)
   std::vector<Anchor> anchors;        // in time order
-  std::vector<Detection> detections;  // associated detections, in time order
-  std::vector<std::size_t> unassociated_marks;  // mark rows with mine -1 (not used as constraints)
-  int mine_count = 0;
+  std::vector<Detection> detections;  // every detection, in time order
+  int mine_count = 0;                 // K <= kMaxMines
 };
 
-/// Builds the sparse constraints. Marks with mine -1 are listed, not constrained.
+inline constexpr int kMaxMines = 64;
+
+/// Builds the sparse constraints. A mark with mine -1 is a disjunction over the
+/// mines (seed 001 VI-4); mine_count must exceed every mine number and be <= 64.
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes);
 
 /// The prior domains: increments from the sensors, depth from the barometer,
-/// fixes on sample times, unbounded elsewhere; mines unbounded.
+/// fixes on sample times, unbounded elsewhere; mines unbounded; each detection's
+/// candidate mines.
 TubeDomains initial_domains(const Mission& mission, const SensorModel& model, const MissionNetwork& network);
 
 }  // namespace gesmi

@@ -1,6 +1,7 @@
 #include "solver/network/mission_solver.h"
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -105,38 +106,96 @@ class Propagation {
       }
       move = std::max(move, largest_move(before, q));
     }
-    for (const Detection& det : net_.detections) {
-      Vec3I q = det.at.position(d_);
-      Vec3I& m = d_.mines[static_cast<std::size_t>(det.mine)];
-      const Vec3I q_before = q, m_before = m;
-      if (!det.contract(q, m) || !det.at.narrow(d_, q)) {
-        failure = detection_failure(det, q_before, m_before);
-        return false;
-      }
-      move = std::max({move, largest_move(q_before, q), largest_move(m_before, m)});
-    }
+    for (std::size_t j = 0; j < net_.detections.size(); ++j)
+      if (!detection(j, move, failure)) return false;
     return true;
   }
 
-  Inconsistency detection_failure(const Detection& det, const Vec3I& q, const Vec3I& m) const {
+  // One detection: with a single candidate mine, the mark contractor on the tube at
+  // the mark time and that mine's box; with several (an unassociated mark), the
+  // disjunction: each candidate is tried on copies, those that empty are dropped,
+  // and the tube keeps the hull of what the others allow (mine boxes are narrowed
+  // only once a single candidate is left).
+  bool detection(std::size_t j, double& move, std::optional<Inconsistency>& failure) {
+    const Detection& det = net_.detections[j];
+    std::uint64_t& candidates = d_.candidates[j];
+    Vec3I q = det.at.position(d_);
+    const Vec3I q_before = q;
+    if (std::popcount(candidates) > 1) {
+      Vec3I allowed(Interval::empty(), Interval::empty(), Interval::empty());
+      std::uint64_t kept = 0;
+      for (int i = 0; i < net_.mine_count; ++i) {
+        if (!(candidates >> i & 1)) continue;
+        Vec3I qi = q, mi = d_.mines[static_cast<std::size_t>(i)];
+        if (!det.contract(qi, mi)) continue;
+        kept |= std::uint64_t{1} << i;
+        for (int c = 0; c < 3; ++c) allowed[c] = hull(allowed[c], qi[c]);
+      }
+      if (kept == 0) {
+        failure = unexplained_failure(det, q);
+        return false;
+      }
+      candidates = kept;
+      q = allowed;
+    }
+    if (std::popcount(candidates) == 1) {
+      const int mine = std::countr_zero(candidates);
+      Vec3I& m = d_.mines[static_cast<std::size_t>(mine)];
+      const Vec3I m_before = m;
+      if (!det.contract(q, m)) {
+        failure = detection_failure(det, mine, q_before, m_before);
+        return false;
+      }
+      move = std::max(move, largest_move(m_before, m));
+    }
+    if (!det.at.narrow(d_, q)) {
+      const int first = std::countr_zero(candidates);
+      failure = detection_failure(det, first, q_before, d_.mines[static_cast<std::size_t>(first)]);
+      return false;
+    }
+    move = std::max(move, largest_move(q_before, q));
+    return true;
+  }
+
+  std::string detection_head(const Detection& det, const std::string& mine) const {
+    char head[200];
+    std::snprintf(head, sizeof head, "detection %zu at t = %s (mine %s, range %.2f m, %s)", det.mark,
+                  format_time(det.time).c_str(), mine.c_str(), det.measured_range, det.side > 0 ? "starboard" : "port");
+    return head;
+  }
+
+  Inconsistency unexplained_failure(const Detection& det, const Vec3I& q) const {
     Inconsistency inc;
     inc.kind = Inconsistency::Kind::detection;
     inc.step = det.at.k;
     inc.time = det.time;
     inc.source = det.mark;
-    char head[160];
-    std::snprintf(head, sizeof head, "detection %zu at t = %s (mine %d, range %.2f m, %s)", det.mark,
-                  format_time(det.time).c_str(), det.mine, det.measured_range, det.side > 0 ? "starboard" : "port");
+    std::string distances;
+    for (int i = 0; i < net_.mine_count; ++i)
+      if (det.allowed >> i & 1)
+        distances += (distances.empty() ? "" : ", ") + std::string("mine ") + std::to_string(i) + " " +
+                     format_interval(box_distance(q, d_.mines[static_cast<std::size_t>(i)]));
+    inc.message = detection_head(det, "?") + ": no mine can explain it (distances from the tube, m: " + distances + ")";
+    return inc;
+  }
+
+  Inconsistency detection_failure(const Detection& det, int mine, const Vec3I& q, const Vec3I& m) const {
+    Inconsistency inc;
+    inc.kind = Inconsistency::Kind::detection;
+    inc.step = det.at.k;
+    inc.time = det.time;
+    inc.source = det.mark;
+    const std::string head = detection_head(det, det.mine >= 0 ? std::to_string(det.mine) : "? -> " + std::to_string(mine));
     const Interval distance = box_distance(q, m);
     std::string why;
     if (!distance.intersects(det.range))
       why = ": range " + format_interval(det.range) + " m cannot be reached, the distance from the tube to mine " +
-            std::to_string(det.mine) + " is within " + format_interval(distance) + " m";
+            std::to_string(mine) + " is within " + format_interval(distance) + " m";
     else
-      why = ": mine " + std::to_string(det.mine) + " cannot lie in the " + (det.side > 0 ? "starboard" : "port") +
+      why = ": mine " + std::to_string(mine) + " cannot lie in the " + (det.side > 0 ? "starboard" : "port") +
             " sonar plane below the robot at that range (tube north " + format_interval(q[0]) + ", east " +
             format_interval(q[1]) + "; mine box north " + format_interval(m[0]) + ", east " + format_interval(m[1]) + ")";
-    inc.message = std::string(head) + why;
+    inc.message = head + why;
     return inc;
   }
 

@@ -3,6 +3,7 @@
 // per axis for the positions p(k) (the tube, N entries) and for the increments
 // d(k) = p(k+1) - p(k) (N - 1 entries), plus one box per mine.
 
+#include <cstdint>
 #include <vector>
 
 #include "solver/interval/box.h"
@@ -13,6 +14,8 @@ struct TubeDomains {
   std::vector<Interval> px, py, pz;  // north, east, down (m)
   std::vector<Interval> dx, dy, dz;  // increments (m)
   std::vector<Vec3I> mines;          // NED (m)
+  /// Per detection of the network: the mines it may still belong to (bit i: mine i).
+  std::vector<std::uint64_t> candidates;
 
   std::size_t size() const { return px.size(); }
   Vec3I position(std::size_t k) const { return Vec3I(px[k], py[k], pz[k]); }
