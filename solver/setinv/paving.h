@@ -14,7 +14,8 @@ namespace gesmi {
 
 class Paving {
  public:
-  explicit Paving(std::size_t dim = 0) : dim_(dim) {}
+  Paving() : dim_(0) {}
+  explicit Paving(std::size_t dim) : dim_(dim) {}
 
   std::size_t dim() const { return dim_; }
   std::size_t size() const { return dim_ == 0 ? 0 : data_.size() / dim_; }

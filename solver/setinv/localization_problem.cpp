@@ -1,0 +1,124 @@
+#include "solver/setinv/localization_problem.h"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "solver/setinv/localization_data.h"
+
+namespace gesmi {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+/// Remark 4's test for a x + b y <= c on the position of a box.
+struct HalfPlanes {
+  const std::vector<HalfPlane>& planes;
+  IBool operator()(const Box& box) const {
+    IBool all(true);
+    for (const HalfPlane& h : planes) all = all && leq(Interval(h.a) * box[0] + Interval(h.b) * box[1], Interval(h.c));
+    return all;
+  }
+};
+
+LocalizationData make_data(const LocalizationProblem& p) {
+  return LocalizationData(RangeData(p.map.walls, p.range_sensors, p.ranges),
+                          BearingData(p.map.walls, p.map.landmarks, p.bearing_sensors, p.bearings));
+}
+
+std::string check_angle(double a, const std::string& what) {
+  return std::isfinite(a) ? std::string() : what + " must be finite";
+}
+
+}  // namespace
+
+bool box_holds_pose(std::span<const Interval> box, const Pose<double>& pose) {
+  if (!box[0].contains(pose.x) || !box[1].contains(pose.y)) return false;
+  const double turns = std::round((box[2].mid() - pose.theta) / kTwoPi);
+  return box[2].contains(pose.theta + turns * kTwoPi);
+}
+
+std::string LocalizationProblem::validate() const {
+  if (datum_count() == 0) return "no measurements";
+  if (priors.empty()) return "no prior box";
+  for (const Box& b : priors) {
+    if (b.size() != 3) return "prior boxes must have 3 components (x, y, theta)";
+    for (const Interval& x : b)
+      if (!x.is_bounded() || x.is_empty()) return "prior boxes must be bounded and non-empty";
+  }
+  for (const RangeMeasurement& m : ranges) {
+    if (m.sensor >= range_sensors.size()) return "range measurement of an unknown sensor";
+    if (!(m.range > 0.0) || !std::isfinite(m.range)) return "ranges must be positive and finite";
+  }
+  for (const BearingMeasurement& m : bearings) {
+    if (m.sensor >= bearing_sensors.size()) return "bearing measurement of an unknown sensor";
+    if (auto e = check_angle(m.bearing, "bearings"); !e.empty()) return e;
+  }
+  for (const RangeSensor& s : range_sensors)
+    if (!(s.half_aperture > 0.0 && s.half_aperture < std::numbers::pi / 4) || !(s.precision >= 0.0 && s.precision < 1.0))
+      return "range sensor " + s.name + ": half aperture must be in (0, 45) degrees and precision in [0, 1)";
+  for (const BearingSensor& s : bearing_sensors)
+    if (!(s.precision >= 0.0 && s.precision < std::numbers::pi / 2))
+      return "bearing sensor " + s.name + ": precision must be in [0, 90) degrees";
+  if (!(epsilon > 0.0) || !(epsilon_min > 0.0) || epsilon_min > epsilon) return "need 0 < epsilon_min <= epsilon";
+  if (outliers < 0 || outliers > static_cast<int>(datum_count())) return "outliers must be between 0 and the number of measurements";
+  if (extra_outliers < 0) return "extra outliers must not be negative";
+  return {};
+}
+
+LocalizationResult localize(const LocalizationProblem& problem,
+                            const std::function<void(const SiviaProgress&)>& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  LocalizationData data = make_data(problem);
+  const HalfPlanes prior{problem.constraints};
+  SiviaOptions sivia_options;
+  sivia_options.epsilon = problem.epsilon;
+  sivia_options.periodic_dimension = 2;
+  sivia_options.period = kTwoPi;
+  sivia_options.max_boxes = problem.max_boxes;
+  sivia_options.max_seconds = problem.max_seconds;
+  sivia_options.progress = progress;
+  LocalizationResult result;
+  if (problem.policy == OutlierPolicy::fixed) {
+    result.q = problem.outliers;
+    result.paving = sivia_q(data, problem.outliers, problem.priors, sivia_options, prior);
+    result.found = !result.paving.inner.empty() || !result.paving.boundary.empty();
+  } else {
+    GomneOptions options;
+    options.epsilon0 = problem.epsilon;
+    options.epsilon_min = problem.epsilon_min;
+    options.extra_outliers = problem.extra_outliers;
+    options.max_outliers = problem.max_outliers;
+    options.sivia = sivia_options;
+    GomneResult g = gomne(data, problem.priors, options, prior);
+    result.q = std::max(0, g.q_used);
+    result.found = g.found;
+    result.paving = std::move(g.paving);
+    g.paving = SiviaResult{Paving(), Paving(), g.paving.report};
+    result.gomne = std::move(g);
+  }
+  ComponentOptions component_options;
+  component_options.periodic_dimension = 2;
+  component_options.period = kTwoPi;
+  component_options.periodic_origin = problem.priors.front()[2].lo();
+  for (PavingComponent& c : connected_components(result.paving.inner, result.paving.boundary, component_options)) {
+    LocalizationHypothesis h;
+    h.outliers = component_outliers(data, result.paving, c, result.q);
+    Pose<double> at{c.hull[0].mid(), c.hull[1].mid(), c.hull[2].mid()};
+    if (!h.outliers.point.empty()) at = {h.outliers.point[0].mid(), h.outliers.point[1].mid(), h.outliers.point[2].mid()};
+    h.range_walls = data.ranges().associate(at);
+    h.bearing_landmarks = data.bearings().associate(at);
+    if (problem.truth) {
+      for (std::size_t i : c.inner) h.contains_truth = h.contains_truth || box_holds_pose(result.paving.inner.box(i), *problem.truth);
+      for (std::size_t i : c.boundary)
+        h.contains_truth = h.contains_truth || box_holds_pose(result.paving.boundary.box(i), *problem.truth);
+    }
+    result.truth_enclosed = result.truth_enclosed || h.contains_truth;
+    h.component = std::move(c);
+    result.hypotheses.push_back(std::move(h));
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace gesmi

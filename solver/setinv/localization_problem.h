@@ -1,0 +1,79 @@
+#pragma once
+// Static localization of a robot (x, y, theta) from range and bearing measurements:
+// the problem as plain data (built by io/ from a scenario file), and `localize`,
+// which runs SIVIA(q) for a fixed number of outliers (seeds 000, 002, 003) or GOMNE
+// for the minimal one (seed 004), then splits the result into connected components,
+// one hypothesis each, with the data each treats as outliers and its association of
+// measurements with walls and landmarks.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "solver/setinv/components.h"
+#include "solver/setinv/gomne.h"
+#include "solver/setinv/localization_map.h"
+#include "solver/setinv/outlier_sets.h"
+
+namespace gesmi {
+
+/// Prior constraint a x + b y <= c on the position (seed 004, Remark 4).
+struct HalfPlane {
+  double a = 0, b = 0, c = 0;
+};
+
+enum class OutlierPolicy {
+  fixed,    // SIVIA(q) with q = outliers (q = 0: every measurement holds)
+  minimal,  // GOMNE: smallest q with a non-empty inner set, plus extra_outliers
+};
+
+struct LocalizationProblem {
+  std::string name;
+  LocalizationMap map;
+  std::vector<RangeSensor> range_sensors;
+  std::vector<BearingSensor> bearing_sensors;
+  std::vector<RangeMeasurement> ranges;
+  std::vector<BearingMeasurement> bearings;
+  std::vector<Box> priors;             // boxes (x, y, theta), theta in radians
+  std::vector<HalfPlane> constraints;  // all must hold
+  double epsilon = 0.02;               // SIVIA accuracy (GOMNE's epsilon0)
+  double epsilon_min = 1e-4;           // GOMNE's Remark 3 floor
+  OutlierPolicy policy = OutlierPolicy::fixed;
+  int outliers = 0;                    // q for the fixed policy
+  int extra_outliers = 0;              // n_u of Remark 2 for the minimal policy
+  int max_outliers = -1;               // GOMNE's largest q (-1: all data)
+  std::size_t max_boxes = 50'000'000;
+  double max_seconds = 600.0;
+  std::optional<Pose<double>> truth;   // for checks and pictures only
+
+  std::size_t datum_count() const { return ranges.size() + bearings.size(); }
+  /// Empty when consistent (indices, counts, widths); otherwise the reason.
+  std::string validate() const;
+};
+
+struct LocalizationHypothesis {
+  PavingComponent component;
+  ComponentOutliers outliers;          // data indices: ranges first, then bearings
+  std::vector<int> range_walls;        // per range measurement: wall index, -1 none
+  std::vector<int> bearing_landmarks;  // per bearing measurement: landmark, -1 none
+  bool contains_truth = false;
+};
+
+struct LocalizationResult {
+  SiviaResult paving;
+  int q = 0;                           // the number of outliers the pavings allow
+  bool found = false;                  // inner set non-empty (minimal) / set non-empty (fixed)
+  std::optional<GomneResult> gomne;    // the run's steps (without its paving) for the minimal policy
+  std::vector<LocalizationHypothesis> hypotheses;
+  bool truth_enclosed = false;         // the true pose lies in inner ∪ boundary
+  double seconds = 0.0;
+};
+
+LocalizationResult localize(const LocalizationProblem& problem,
+                            const std::function<void(const SiviaProgress&)>& progress = {});
+
+/// Does the box hold the pose (theta compared modulo 2 pi)?
+bool box_holds_pose(std::span<const Interval> box, const Pose<double>& pose);
+
+}  // namespace gesmi

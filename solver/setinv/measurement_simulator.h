@@ -1,0 +1,32 @@
+#pragma once
+// Measurements consistent with a true pose, for scenarios and tests: each range is
+// the model's f_i(p*) divided by (1 + u), u uniform in +- error_fraction * alpha, so
+// the feasible interval [d (1 - alpha), d (1 + alpha)] holds f_i(p*); each bearing of
+// a visible landmark is shifted by at most error_fraction * delta. Chosen data can
+// be replaced by outliers: values inconsistent with p* by a margin.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "solver/setinv/localization_map.h"
+
+namespace gesmi {
+
+struct SimulationOptions {
+  std::uint32_t seed = 1;
+  double error_fraction = 0.9;           // of each bound, in [0, 1)
+  double max_range = 10.0;               // sonars report nothing beyond
+  std::vector<std::size_t> range_outliers;    // sensor indices whose range is replaced
+  std::vector<std::size_t> bearing_outliers;  // measurement indices (in output order) replaced
+};
+
+/// One range per sensor that gets an echo within max_range, in sensor order.
+std::vector<RangeMeasurement> simulate_ranges(const LocalizationMap& map, const std::vector<RangeSensor>& sensors,
+                                              const Pose<double>& truth, const SimulationOptions& options);
+
+/// One bearing per (sensor, visible landmark), in sensor then landmark order.
+std::vector<BearingMeasurement> simulate_bearings(const LocalizationMap& map, const std::vector<BearingSensor>& sensors,
+                                                  const Pose<double>& truth, const SimulationOptions& options);
+
+}  // namespace gesmi
