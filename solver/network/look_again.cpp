@@ -1,0 +1,53 @@
+#include "solver/network/look_again.h"
+
+#include <algorithm>
+
+namespace gesmi {
+
+std::vector<LookAgainWindow> look_again_windows(const Waterfall& w, std::span<const double> time,
+                                                const MissionNetwork& network, const TubeDomains& domains) {
+  std::vector<LookAgainWindow> windows;
+  for (std::size_t i = 0; i < w.mines; ++i) {
+    const auto explained = [&](double t0, double t1) {
+      for (std::size_t j = 0; j < network.detections.size(); ++j) {
+        const Detection& det = network.detections[j];
+        if ((domains.candidates[j] >> i & 1) && det.time >= t0 && det.time <= t1) return true;
+      }
+      return false;
+    };
+    std::size_t k = 0;
+    while (k < w.steps) {
+      if (!w.feasible(k, i)) {
+        ++k;
+        continue;
+      }
+      LookAgainWindow win;
+      win.mine = static_cast<int>(i);
+      win.k_start = k;
+      win.range_lo = w.lo(k, i);
+      win.range_hi = w.hi(k, i);
+      while (k + 1 < w.steps && w.feasible(k + 1, i)) {
+        ++k;
+        win.range_lo = std::min(win.range_lo, w.lo(k, i));
+        win.range_hi = std::max(win.range_hi, w.hi(k, i));
+      }
+      win.k_end = k;
+      win.t_start = time[win.k_start];
+      win.t_end = time[win.k_end];
+      // A detection between two samples at the window's edges still belongs to it.
+      const double t0 = win.k_start > 0 ? time[win.k_start - 1] : win.t_start;
+      const double t1 = win.k_end + 1 < w.steps ? time[win.k_end + 1] : win.t_end;
+      if (!explained(t0, t1)) windows.push_back(win);
+      ++k;
+    }
+  }
+  std::stable_sort(windows.begin(), windows.end(), [](const LookAgainWindow& a, const LookAgainWindow& b) {
+    const double da = a.t_end - a.t_start, db = b.t_end - b.t_start;
+    if (da != db) return da < db;
+    if (a.mine != b.mine) return a.mine < b.mine;
+    return a.t_start < b.t_start;
+  });
+  return windows;
+}
+
+}  // namespace gesmi
