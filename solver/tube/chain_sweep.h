@@ -25,6 +25,7 @@ struct SweepResult {
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::size_t first_empty = kNone;
   double max_shrink = 0.0;
+  std::size_t last = 0;  // last index of x the sweep updated
   bool consistent() const { return first_empty == kNone; }
 };
 
@@ -32,6 +33,12 @@ struct SweepResult {
 SweepResult chain_forward(std::span<Interval> x, std::span<const Interval> v);
 /// Backward: x(k) := x(k) ∩ (x(k+1) - v(k)) then v(k) := v(k) ∩ (x(k+1) - x(k)), k = n-2 .. 0.
 SweepResult chain_backward(std::span<Interval> x, std::span<Interval> v);
+
+/// Work-list spreads: from x(from) forward (or backward), stopping after the first
+/// step whose bounds moved by no more than stop_below (a domain that no longer
+/// shrinks stops the spread: beyond it nothing can change).
+SweepResult chain_forward_from(std::span<Interval> x, std::span<const Interval> v, std::size_t from, double stop_below);
+SweepResult chain_backward_from(std::span<Interval> x, std::span<Interval> v, std::size_t from, double stop_below);
 
 SweepResult chain_forward_portable(std::span<Interval> x, std::span<const Interval> v);
 SweepResult chain_backward_portable(std::span<Interval> x, std::span<Interval> v);

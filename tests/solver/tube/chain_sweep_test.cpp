@@ -103,3 +103,37 @@ TEST(ChainSweep, LeavesTheRoundingModeAsItWas) {
 
 }  // namespace
 }  // namespace gesmi
+
+namespace gesmi {
+namespace {
+
+// A chain at its fixpoint, narrowed at one point: spreading from there until the
+// domains stop shrinking gives what full sweeps give.
+TEST(ChainSweep, SpreadFromAChangedPointMatchesFullSweeps) {
+  std::mt19937_64 rng(3);
+  const std::size_t n = 4000;
+  std::vector<Interval> v = random_steps(rng, n - 1);
+  std::vector<Interval> x(n, Interval::entire());
+  x[0] = Interval(-1.0, 1.0);
+  ASSERT_TRUE(chain_forward(x, v).consistent());
+  x[n - 1] = Interval(x[n - 1].mid() - 1.0, x[n - 1].mid() + 1.0);  // a final fix
+  ASSERT_TRUE(chain_backward(x, v).consistent());
+  ASSERT_TRUE(chain_forward(x, v).consistent());
+  std::vector<Interval> full = x, full_v = v, spread = x, spread_v = v;
+  const std::size_t k = n / 3;
+  const Interval narrowed(x[k].mid() - 0.001, x[k].mid() + 0.001);
+  full[k].intersect_with(narrowed);
+  spread[k].intersect_with(narrowed);
+  chain_forward(full, full_v);
+  chain_backward(full, full_v);
+  const SweepResult f = chain_forward_from(spread, spread_v, k, 0.0);
+  const SweepResult b = chain_backward_from(spread, spread_v, k, 0.0);
+  EXPECT_TRUE(f.consistent());
+  EXPECT_TRUE(b.consistent());
+  EXPECT_GT(f.last, k);
+  EXPECT_LT(b.last, k);
+  for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(spread[i], full[i]) << i;
+}
+
+}  // namespace
+}  // namespace gesmi
