@@ -1,0 +1,31 @@
+#pragma once
+// Everything `gesmi localize` writes: the inner and boundary boxes (CSV, HDF5), the
+// components with their hull boxes, outliers and associations (CSV), the summary
+// text (also printed) and the picture. Each file is written to a temporary name and
+// renamed. Formats: docs/setinversion.md.
+
+#include <string>
+#include <vector>
+
+#include "solver/setinv/localization_problem.h"
+
+namespace gesmi::io {
+
+/// Human-readable report: policy, GOMNE steps, paving sizes, hypotheses.
+std::string localization_summary(const LocalizationProblem& problem, const LocalizationResult& result);
+
+/// Boxes of one paving, one per line: component,x_lo,x_hi,y_lo,y_hi,theta_lo_rad,theta_hi_rad.
+std::string paving_csv(const Paving& paving, const std::vector<int>& component_of_box);
+/// One line per hypothesis (component).
+std::string components_csv(const LocalizationProblem& problem, const LocalizationResult& result);
+
+/// Writes inner.csv, boundary.csv, components.csv, summary.txt, paving.png into
+/// `folder` (created if missing); returns the paths written.
+std::vector<std::string> write_localization_outputs(const std::string& folder, const LocalizationProblem& problem,
+                                                    const LocalizationResult& result);
+
+/// Checks before solving that `folder` exists and is writable or can be created
+/// (its parent exists and is writable); throws FormatError naming it.
+void check_output_folder(const std::string& folder);
+
+}  // namespace gesmi::io

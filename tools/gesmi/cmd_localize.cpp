@@ -1,0 +1,88 @@
+// gesmi localize: static localization by set inversion (seeds 000, 002, 003, 004).
+// Thin: read the scenario (io), solve (solver), write the outputs (io), print the
+// summary. With --simulate it prints measurements simulated at the scenario's true
+// pose instead (the generator of missions/localization/).
+
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "io/localization_output.h"
+#include "io/localization_scenario.h"
+#include "solver/setinv/measurement_simulator.h"
+#include "tools/gesmi/cli_args.h"
+
+namespace gesmi::cli {
+namespace {
+
+namespace po = boost::program_options;
+
+constexpr const char* kUsage =
+    "gesmi localize SCENARIO.yaml -o OUT_DIR [--quiet]\n"
+    "       gesmi localize SCENARIO.yaml --simulate [--seed N] [--error-fraction F] [--range-outliers I,J]\n"
+    "                      [--bearing-outliers I,J]";
+
+std::vector<std::size_t> parse_indices(std::string_view option, const std::string& text) {
+  std::vector<std::size_t> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (!item.empty()) {
+      const long long v = parse_integer(option, item);
+      if (v < 0) throw UsageError(std::string(option) + ": indices must not be negative");
+      out.push_back(static_cast<std::size_t>(v));
+    }
+  return out;
+}
+
+int simulate(LocalizationProblem problem, const po::variables_map& values) {
+  if (!problem.truth) throw UsageError("--simulate needs a 'truth' pose in the scenario");
+  SimulationOptions options;
+  options.seed = static_cast<std::uint32_t>(parse_integer("--seed", values["seed"].as<std::string>()));
+  options.error_fraction = parse_non_negative("--error-fraction", values["error-fraction"].as<std::string>());
+  if (options.error_fraction >= 1.0) throw UsageError("--error-fraction must be below 1");
+  if (values.count("range-outliers"))
+    options.range_outliers = parse_indices("--range-outliers", values["range-outliers"].as<std::string>());
+  if (values.count("bearing-outliers"))
+    options.bearing_outliers = parse_indices("--bearing-outliers", values["bearing-outliers"].as<std::string>());
+  for (std::size_t i : options.range_outliers)
+    if (i >= problem.range_sensors.size()) throw UsageError("--range-outliers: no range sensor " + std::to_string(i));
+  problem.ranges = simulate_ranges(problem.map, problem.range_sensors, *problem.truth, options);
+  problem.bearings = simulate_bearings(problem.map, problem.bearing_sensors, *problem.truth, options);
+  std::fputs(io::localization_measurements_yaml(problem).c_str(), stdout);
+  return kExitOk;
+}
+
+int run_localize(std::span<const std::string> args) {
+  po::options_description options("localize options");
+  options.add_options()
+      ("scenario", po::value<std::string>(), "scenario file (YAML)")
+      ("output,o", po::value<std::string>(), "output folder (created if missing)")
+      ("quiet,q", "do not print the summary")
+      ("simulate", "print measurements simulated at the scenario's true pose, write nothing")
+      ("seed", po::value<std::string>()->default_value("1"), "--simulate: random seed")
+      ("error-fraction", po::value<std::string>()->default_value("0.9"), "--simulate: errors as a fraction of the bounds")
+      ("range-outliers", po::value<std::string>(), "--simulate: range sensor indices given outlier values")
+      ("bearing-outliers", po::value<std::string>(), "--simulate: bearing measurement indices given outlier values");
+  po::positional_options_description positional;
+  positional.add("scenario", 1);
+  po::variables_map values;
+  if (!parse_options(args, options, positional, values, kUsage)) return kExitOk;
+  if (!values.count("scenario")) throw UsageError(std::string("missing SCENARIO.yaml; usage: ") + kUsage);
+  const LocalizationProblem problem = io::read_localization_scenario(values["scenario"].as<std::string>());
+  if (values.count("simulate")) return simulate(problem, values);
+  if (!values.count("output")) throw UsageError(std::string("missing -o OUT_DIR; usage: ") + kUsage);
+  const std::string folder = values["output"].as<std::string>();
+  io::check_output_folder(folder);
+  const LocalizationResult result = localize(problem);
+  io::write_localization_outputs(folder, problem, result);
+  if (!values.count("quiet")) std::fputs(io::localization_summary(problem, result).c_str(), stdout);
+  return result.found ? kExitOk : kExitInconsistent;
+}
+
+const bool registered = register_command(
+    {"localize", "static localization by set inversion (SIVIA, GOMNE) from range and bearing data", run_localize});
+
+}  // namespace
+}  // namespace gesmi::cli
