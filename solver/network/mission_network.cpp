@@ -67,7 +67,7 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
   return net;
 }
 
-TubeDomains initial_domains(const Mission& mission, const SensorModel& model, const MissionNetwork& network) {
+TubeDomains sensor_domains(const Mission& mission, const SensorModel& model) {
   const SensorBoxes boxes(mission, model);
   const std::size_t n = mission.size();
   TubeDomains d;
@@ -84,11 +84,21 @@ TubeDomains initial_domains(const Mission& mission, const SensorModel& model, co
     d.dy[k] = inc[1];
     d.dz[k] = inc[2];
   }
+  return d;
+}
+
+void add_network_priors(TubeDomains& d, const MissionNetwork& network) {
   for (const Anchor& a : network.anchors)
     if (a.at.on_grid) a.at.narrow(d, a.fix.box);  // an empty result is found again by the solver
   d.mines.assign(static_cast<std::size_t>(std::max(network.mine_count, 0)),
                  Vec3I(Interval::entire(), Interval::entire(), Interval::entire()));
+  d.candidates.clear();
   for (const Detection& det : network.detections) d.candidates.push_back(det.allowed);
+}
+
+TubeDomains initial_domains(const Mission& mission, const SensorModel& model, const MissionNetwork& network) {
+  TubeDomains d = sensor_domains(mission, model);
+  add_network_priors(d, network);
   return d;
 }
 

@@ -48,4 +48,10 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
 /// candidate mines.
 TubeDomains initial_domains(const Mission& mission, const SensorModel& model, const MissionNetwork& network);
 
+/// The two halves of initial_domains: what the sensors give (increments and depth),
+/// which does not depend on the fixes and marks, and the network's own priors
+/// (fixes on sample times, unbounded mines, candidate mines).
+TubeDomains sensor_domains(const Mission& mission, const SensorModel& model);
+void add_network_priors(TubeDomains& domains, const MissionNetwork& network);
+
 }  // namespace gesmi
