@@ -99,8 +99,16 @@ SiviaResult sivia_q(Data& data, int q, std::span<const Box> priors, const SiviaO
   return sivia(test, priors, options, ctc);
 }
 
-/// Seed 004, Table 2. The contractor, when given, must keep every point of S_q for
-/// every q (e.g. a q-relaxed intersection); the default contracts nothing.
+/// A contractor whose validity depends on the number of outliers allowed: GOMNE
+/// asks it for its SIVIA(q) version with `with_outliers(q)`.
+template <class C>
+concept OutlierAwareContractor = requires(const C& c, int q) {
+  { c.with_outliers(q) } -> Contractor;
+};
+
+/// Seed 004, Table 2. The contractor, when given, must keep every point of S_q
+/// (an OutlierAwareContractor is asked for its version for each q); the default
+/// contracts nothing.
 template <DatumTests Data, class Prior = NoPriorConstraint, Contractor Ctc = CtcNone>
 GomneResult gomne(Data& data, std::span<const Box> priors, const GomneOptions& options, const Prior& prior = {},
                   const Ctc& ctc = {}) {
@@ -117,7 +125,12 @@ GomneResult gomne(Data& data, std::span<const Box> priors, const GomneOptions& o
     o.max_seconds = std::max(1e-3, options.sivia.max_seconds - elapsed());
     o.max_boxes = options.sivia.max_boxes > visited ? options.sivia.max_boxes - visited : 1;
     const auto t0 = Clock::now();
-    SiviaResult r = sivia_q(data, q, boxes, o, prior, ctc);
+    SiviaResult r = [&] {
+      if constexpr (OutlierAwareContractor<Ctc>)
+        return sivia_q(data, q, boxes, o, prior, ctc.with_outliers(q));
+      else
+        return sivia_q(data, q, boxes, o, prior, ctc);
+    }();
     visited += r.report.boxes_visited;
     result.steps.push_back({q, epsilon, r.inner.size(), r.boundary.size(), r.report.boxes_visited,
                             std::chrono::duration<double>(Clock::now() - t0).count()});

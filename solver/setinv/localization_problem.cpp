@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "solver/setinv/localization_data.h"
+#include "solver/setinv/range_contractor.h"
 
 namespace gesmi {
 namespace {
@@ -79,9 +80,12 @@ LocalizationResult localize(const LocalizationProblem& problem,
   sivia_options.max_seconds = problem.max_seconds;
   sivia_options.progress = progress;
   LocalizationResult result;
+  const bool contract = problem.use_contractors && !problem.ranges.empty();
+  const CtcRangeRelaxed ctc(problem.map.walls, problem.range_sensors, problem.ranges);
   if (problem.policy == OutlierPolicy::fixed) {
     result.q = problem.outliers;
-    result.paving = sivia_q(data, problem.outliers, problem.priors, sivia_options, prior);
+    result.paving = contract ? sivia_q(data, problem.outliers, problem.priors, sivia_options, prior, ctc.with_outliers(problem.outliers))
+                             : sivia_q(data, problem.outliers, problem.priors, sivia_options, prior);
     result.found = !result.paving.inner.empty() || !result.paving.boundary.empty();
   } else {
     GomneOptions options;
@@ -90,7 +94,7 @@ LocalizationResult localize(const LocalizationProblem& problem,
     options.extra_outliers = problem.extra_outliers;
     options.max_outliers = problem.max_outliers;
     options.sivia = sivia_options;
-    GomneResult g = gomne(data, problem.priors, options, prior);
+    GomneResult g = contract ? gomne(data, problem.priors, options, prior, ctc) : gomne(data, problem.priors, options, prior);
     result.q = std::max(0, g.q_used);
     result.found = g.found;
     result.paving = std::move(g.paving);

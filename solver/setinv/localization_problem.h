@@ -46,6 +46,8 @@ struct LocalizationProblem {
   std::size_t max_boxes = 50'000'000;
   double max_seconds = 600.0;
   std::optional<Pose<double>> truth;   // for checks and pictures only
+  /// Contract boxes before testing them (CtcRangeRelaxed); off only to measure its effect.
+  bool use_contractors = true;
 
   std::size_t datum_count() const { return ranges.size() + bearings.size(); }
   /// Empty when consistent (indices, counts, widths); otherwise the reason.

@@ -62,13 +62,15 @@ T remoteness(const Vec2T<T>& s, const Vec2T<T>& u1, const Vec2T<T>& u2, const Se
   // Step 1: h, the orthogonal projection, at distance det(ab, as) / |ab|.
   candidate(all_nonpositive(dot(ab, sa), -dot(ab, sb)) && all_nonpositive(dot(u1, ab), -dot(u2, ab)),
             [&] { return abs(det(ab, sa)) / norm(ab); });
+  // Sides of a and b against the cone's edges, shared by steps 2 to 5.
+  const T u1a = det(u1, sa), u1b = det(u1, sb), u2a = det(u2, sa), u2b = det(u2, sb);
   // Steps 2-3: h1 and h2, along u1 and u2 (det, not the scalar product printed in
   // seed 000's Example 1: the distance along u is det(ab, sa) / det(ab, u)).
-  candidate(all_nonpositive(det(u1, sa), -det(u1, sb)), [&] { return abs(det(ab, sa) / d1ab); });
-  candidate(all_nonpositive(det(u2, sa), -det(u2, sb)), [&] { return abs(det(ab, sa) / d2ab); });
+  candidate(all_nonpositive(u1a, -u1b), [&] { return abs(det(ab, sa) / d1ab); });
+  candidate(all_nonpositive(u2a, -u2b), [&] { return abs(det(ab, sa) / d2ab); });
   // Steps 4-5: the end points, when inside the cone.
-  candidate(all_nonpositive(-det(u1, sa), det(u2, sa)), [&] { return norm(sa); });
-  candidate(all_nonpositive(-det(u1, sb), det(u2, sb)), [&] { return norm(sb); });
+  candidate(all_nonpositive(-u1a, u2a), [&] { return norm(sa); });
+  candidate(all_nonpositive(-u1b, u2b), [&] { return norm(sb); });
   // Step 6 on boxes where the face test is undecided, and Remark 2's test.
   if constexpr (is_interval_v<T>) {
     r = chi(face, far_away<T>(), r);

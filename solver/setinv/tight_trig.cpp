@@ -9,8 +9,12 @@ namespace {
 // enclosures; x is bounded with width below two steps.
 bool may_hold_multiple(const Interval& x, const Interval& offset, const Interval& step) {
   const double first = std::floor((x.lo() - offset.hi()) / step.hi()) - 1.0;
-  for (double n = first; n <= first + 4.0; n += 1.0)
+  for (double n = first; n <= first + 4.0; n += 1.0) {
+    // Cheap rejection in doubles with a generous margin, exact check otherwise.
+    const double t = offset.mid() + n * step.mid(), margin = 1e-9 * (1.0 + std::abs(t));
+    if (t + margin < x.lo() || t - margin > x.hi()) continue;
     if ((offset + Interval(n) * step).intersects(x)) return true;
+  }
   return false;
 }
 
