@@ -7,31 +7,18 @@
 
 #include <array>
 #include <bit>
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "solver/network/mission_network.h"
 #include "solver/network/mission_solver.h"
+#include "solver/network/detail/text.h"
 #include "solver/tube/chain_sweep.h"
 
 namespace gesmi::detail {
 
 inline const char* const kAxisNames[] = {"north", "east", "down"};
-
-inline std::string format_interval(const Interval& x) {
-  if (x.is_empty()) return "[empty]";
-  char buffer[80];
-  std::snprintf(buffer, sizeof buffer, "[%.2f, %.2f]", x.lo(), x.hi());
-  return buffer;
-}
-
-inline std::string format_time(double t) {
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.1f s", t);
-  return buffer;
-}
 
 inline double largest_move(const Vec3I& before, const Vec3I& after) {
   double move = 0.0;
@@ -195,10 +182,8 @@ class MissionPropagation {
   }
 
   std::string detection_head(const Detection& det, const std::string& mine) const {
-    char head[200];
-    std::snprintf(head, sizeof head, "detection %zu at t = %s (mine %s, range %.2f m, %s)", det.mark,
-                  format_time(det.time).c_str(), mine.c_str(), det.measured_range, det.side > 0 ? "starboard" : "port");
-    return head;
+    return "detection " + std::to_string(det.mark) + " at t = " + format_time(det.time) + " (mine " + mine + ", range " +
+           fixed(det.measured_range, 2) + " m, " + (det.side > 0 ? "starboard" : "port") + ")";
   }
 
   Inconsistency unexplained_failure(const Detection& det, const Vec3I& q) const {
