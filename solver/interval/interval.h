@@ -119,6 +119,26 @@ constexpr bool operator==(const Interval& x, const Interval& y) {
   return (x.is_empty() && y.is_empty()) || (x.lo() == y.lo() && x.hi() == y.hi());
 }
 
+// Order relations of IEEE 1788 (all true when both are empty, see each comment).
+/// Every point of x is <= every point of y (true when either is empty).
+constexpr bool precedes(const Interval& x, const Interval& y) {
+  return x.is_empty() || y.is_empty() || x.hi() <= y.lo();
+}
+/// Every point of x is < every point of y (true when either is empty).
+constexpr bool strictly_precedes(const Interval& x, const Interval& y) {
+  return x.is_empty() || y.is_empty() || x.hi() < y.lo();
+}
+/// x.lo <= y.lo and x.hi <= y.hi (1788 "less"); an empty set is only related to itself.
+constexpr bool weakly_less(const Interval& x, const Interval& y) {
+  if (x.is_empty() || y.is_empty()) return x.is_empty() && y.is_empty();
+  return x.lo() <= y.lo() && x.hi() <= y.hi();
+}
+/// As weakly_less with strict comparisons, where -inf < -inf and +inf < +inf count as true.
+constexpr bool strictly_less(const Interval& x, const Interval& y) {
+  if (x.is_empty() || y.is_empty()) return x.is_empty() && y.is_empty();
+  return (x.lo() < y.lo() || (x.lo() == -kInf && y.lo() == -kInf)) && (x.hi() < y.hi() || (x.hi() == kInf && y.hi() == kInf));
+}
+
 constexpr Interval intersect(const Interval& x, const Interval& y) {
   Interval r = x;
   r.intersect_with(y);
@@ -186,6 +206,9 @@ inline Interval operator/(const Interval& x, const Interval& y) {
   }
   return Interval::entire();  // 0 strictly inside y
 }
+
+/// 1 / x with the conventions of division.
+inline Interval recip(const Interval& x) { return Interval(1.0) / x; }
 
 inline Interval& Interval::operator+=(const Interval& y) { return *this = *this + y; }
 inline Interval& Interval::operator-=(const Interval& y) { return *this = *this - y; }

@@ -15,65 +15,48 @@ namespace {
 double libm_down(double y) { return step_down(y, kLibmSteps); }
 double libm_up(double y) { return step_up(y, kLibmSteps); }
 
-// x^n for x >= 0 and n >= 1 by binary powering, every product rounded the same way.
-double pow_positive(double x, int n, bool up) {
-  double result = 1.0;
-  double base = x;
-  while (n > 0) {
-    if (n & 1) result = up ? mul_up(result, base) : mul_down(result, base);
-    n >>= 1;
-    if (n > 0) base = up ? mul_up(base, base) : mul_down(base, base);
-  }
-  return result;
-}
-
 Interval pow_nonnegative_exponent(const Interval& x, int n) {
   if (n == 0) return Interval(1.0);
   if (n == 1) return x;
   if (n % 2 == 0) {
     const double m = x.mig(), M = x.mag();
-    return Interval::from_bounds(pow_positive(m, n, false), pow_positive(M, n, true));
+    return Interval::from_bounds(pow_down(m, n), pow_up(M, n));
   }
   // Odd power: increasing, and odd in x.
-  const auto odd_bound = [n](double v, bool up) {
-    if (v >= 0.0) return pow_positive(v, n, up);
-    return -pow_positive(-v, n, !up);
-  };
-  return Interval::from_bounds(odd_bound(x.lo(), false), odd_bound(x.hi(), true));
+  const double lo = x.lo() >= 0.0 ? pow_down(x.lo(), n) : -pow_up(-x.lo(), n);
+  const double hi = x.hi() >= 0.0 ? pow_up(x.hi(), n) : -pow_down(-x.hi(), n);
+  return Interval::from_bounds(lo, hi);
 }
 
-// Sign of a libm value used to decide monotonicity: +1, -1, or 0 when unsure.
-int reliable_sign(double v) {
-  if (v > 0.0) return 1;
-  if (v < 0.0) return -1;
-  return 0;
+// Sign of the derivative of sin (or cos) just inside [a, b] at the end point x:
+// +1 rising, -1 falling. The derivative (cos, or -sin) of a double is never 0,
+// except -sin(0) for cos, where the side decides: cos falls right of 0.
+// libm's sign is right because its error is below one ulp of a non-zero value.
+int slope_sign(double x, bool cosine, bool left_end) {
+  if (cosine && x == 0.0) return left_end ? -1 : 1;
+  const double d = cosine ? -std::sin(x) : std::cos(x);
+  return d > 0.0 ? 1 : -1;
 }
 
 // Range of sin (or cos, with `cosine`) over [a, b], finite bounds, b - a < 2pi.
-// f rises at an end point where its derivative is positive. Over a width below
-// 2pi, rising at a and falling at b means exactly one maximum inside, and the
-// converse a minimum; equal trends mean monotonic (width < pi) or both extrema.
+// Rising at a and falling at b means exactly one maximum inside, and the converse
+// a minimum (the derivative's zeros are pi apart, so a width below 2pi holds at
+// most two of them and a sign change means exactly one); equal trends mean
+// monotonic when b - a < pi, and both extrema inside otherwise.
 Interval periodic_range(double a, double b, bool cosine) {
   const auto f = [cosine](double x) { return cosine ? std::cos(x) : std::sin(x); };
-  const auto df = [cosine](double x) { return cosine ? -std::sin(x) : std::cos(x); };
-  const int sa = reliable_sign(df(a));
-  const int sb = reliable_sign(df(b));
   const double fa = f(a), fb = f(b);
-  double lo = libm_down(std::min(fa, fb));
-  double hi = libm_up(std::max(fa, fb));
-  const double w_up = sub_up(b, a), w_down = sub_down(b, a);
-  const bool surely_below_pi = w_up < Interval::pi().lo();
-  const bool surely_above_pi = w_down > Interval::pi().hi();
-  const bool maybe_max = (sa >= 0 && sb <= 0) || (sa == 0 || sb == 0);
-  const bool maybe_min = (sa <= 0 && sb >= 0) || (sa == 0 || sb == 0);
-  const bool same_trend_possible = (sa == sb) || sa == 0 || sb == 0;
-  if (maybe_max) hi = 1.0;
-  if (maybe_min) lo = -1.0;
-  if (same_trend_possible && !surely_below_pi) {
-    // Same trend at both ends with a width of pi or more: both extrema are inside.
-    // With an unsure width the hull of both cases is taken.
-    (void)surely_above_pi;
-    lo = -1.0;
+  // sin(0) = 0 and cos(0) = 1 are exact (C Annex F); other values are widened.
+  const auto down = [](double x, double fx) { return x == 0.0 ? fx : libm_down(fx); };
+  const auto up = [](double x, double fx) { return x == 0.0 ? fx : libm_up(fx); };
+  double lo = std::min(down(a, fa), down(b, fb));
+  double hi = std::max(up(a, fa), up(b, fb));
+  const int sa = slope_sign(a, cosine, true), sb = slope_sign(b, cosine, false);
+  const bool surely_below_pi = sub_up(b, a) <= Interval::pi().lo();
+  if (sa > 0 && sb < 0) hi = 1.0;
+  if (sa < 0 && sb > 0) lo = -1.0;
+  if (sa == sb && !surely_below_pi) {
+    lo = -1.0;  // same trend over pi or more: both extrema are inside
     hi = 1.0;
   }
   return Interval::from_bounds(std::max(lo, -1.0), std::min(hi, 1.0));
@@ -81,7 +64,8 @@ Interval periodic_range(double a, double b, bool cosine) {
 
 Interval sin_or_cos(const Interval& x, bool cosine) {
   if (x.is_empty()) return Interval::empty();
-  if (!x.is_bounded() || sub_down(x.hi(), x.lo()) >= Interval::two_pi().hi()) return Interval(-1.0, 1.0);
+  // periodic_range needs a width surely below 2pi: sub_up bounds the exact width.
+  if (!x.is_bounded() || sub_up(x.hi(), x.lo()) > Interval::two_pi().lo()) return Interval(-1.0, 1.0);
   if (x.is_degenerate() && x.lo() == 0.0) return Interval(cosine ? 1.0 : 0.0);
   return periodic_range(x.lo(), x.hi(), cosine);
 }
@@ -94,8 +78,11 @@ Interval pow(const Interval& x, int n) {
   // x^-n = 1 / x^n; the division handles the zero cases as IEEE 1788 pown does.
   // n = INT_MIN has no positive counterpart: x^INT_MIN = (x^(INT_MIN/2))^2.
   if (n == std::numeric_limits<int>::min()) return sqr(pow(x, n / 2));
-  const Interval xn = pow_nonnegative_exponent(x, -n);
-  return Interval(1.0) / xn;
+  const Interval via_power = Interval(1.0) / pow_nonnegative_exponent(x, -n);
+  if (x.contains(0.0)) return via_power;
+  // Away from 0, (1/x)^|n| is a second enclosure; it stays tight where x^|n|
+  // overflows (x = 1e300, n = -2 gives about 1e-600, not 1/DBL_MAX).
+  return intersect(via_power, pow_nonnegative_exponent(recip(x), -n));
 }
 
 Interval exp(const Interval& x) {
@@ -133,13 +120,12 @@ Interval cos(const Interval& x) { return sin_or_cos(x, true); }
 
 Interval tan(const Interval& x) {
   if (x.is_empty()) return Interval::empty();
-  if (!x.is_bounded() || sub_up(x.hi(), x.lo()) >= Interval::pi().lo()) return Interval::entire();
+  if (!x.is_bounded() || sub_up(x.hi(), x.lo()) > Interval::pi().lo()) return Interval::entire();
   if (x.is_degenerate() && x.lo() == 0.0) return Interval(0.0);
   // Width below pi: at most one pole, and a pole lies inside exactly when cos
-  // changes sign between the end points.
-  const int ca = reliable_sign(std::cos(x.lo()));
-  const int cb = reliable_sign(std::cos(x.hi()));
-  if (ca == 0 || cb == 0 || ca != cb) return Interval::entire();
+  // changes sign between the end points (cos of a double is never 0, and libm
+  // gets its sign right).
+  if ((std::cos(x.lo()) > 0.0) != (std::cos(x.hi()) > 0.0)) return Interval::entire();
   const double lo = x.lo() == 0.0 ? 0.0 : libm_down(std::tan(x.lo()));
   const double hi = x.hi() == 0.0 ? 0.0 : libm_up(std::tan(x.hi()));
   return Interval::from_bounds(lo, hi);
@@ -172,14 +158,25 @@ Interval atan2_from_corners(double yl, double yh, double xl, double xh) {
   const auto add_corner = [&](double y, double x) {
     if (y == 0.0) y = 0.0;  // +0: the upper side of the cut
     const double v = std::atan2(y, x);
-    const bool exact = (v == 0.0);  // atan2(+0, x > 0) and atan2(y, +inf) are exactly 0
-    lo = std::min(lo, exact ? v : libm_down(v));
-    hi = std::max(hi, exact ? v : libm_up(v));
+    // Exactly 0: atan2(+0, x > 0), and the limit atan2(finite y, +inf). Any other
+    // 0 is an underflow (atan2(1e-300, 1e300) is 1e-600) and is widened.
+    const bool exact = (y == 0.0 && x > 0.0) || (x == kInf && std::isfinite(y));
+    lo = std::min(lo, exact ? 0.0 : libm_down(v));
+    hi = std::max(hi, exact ? 0.0 : libm_up(v));
   };
   add_corner(yl, xl);
   add_corner(yl, xh);
   add_corner(yh, xl);
   add_corner(yh, xh);
+  // Clamp to the range the signs allow: y >= 0 gives [0, pi], y < 0 (or y <= 0
+  // with x > 0) gives [-pi, 0], x >= 0 gives [-pi/2, pi/2].
+  const double half_pi_hi = Interval::half_pi().hi();
+  if (yl >= 0.0) lo = std::max(lo, 0.0);
+  if (yh < 0.0 || (yh == 0.0 && xl > 0.0)) hi = std::min(hi, 0.0);
+  if (xl >= 0.0) {
+    lo = std::max(lo, -half_pi_hi);
+    hi = std::min(hi, half_pi_hi);
+  }
   return Interval::from_bounds(std::max(lo, -pi_hi), std::min(hi, pi_hi));
 }
 

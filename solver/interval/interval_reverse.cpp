@@ -3,7 +3,10 @@
 
 #include "solver/interval/interval_reverse.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace gesmi {
 namespace {
@@ -20,31 +23,75 @@ bool fail(Interval& a, Interval& b) {
 
 bool narrow(Interval& x, const Interval& by) { return x.intersect_with(by); }
 
-// Lower and upper n-th roots of v >= 0, checked with directed powers so that
-// root_down(v)^n <= v <= root_up(v)^n holds exactly.
-double power_bound(double r, int n, bool up) {
-  double result = 1.0;
-  for (int i = 0; i < n; ++i) result = up ? mul_up(result, r) : mul_down(result, r);
-  return result;
+// Ordinals of non-negative doubles: consecutive doubles have consecutive ordinals.
+std::int64_t ordinal(double x) { return std::bit_cast<std::int64_t>(x); }
+double from_ordinal(std::int64_t i) { return std::bit_cast<double>(i); }
+
+// The smallest double r >= 0 with pred(r), for pred monotone (false, then true)
+// and true at +inf. Gallops away from the guess, then bisects the ordinals.
+template <class Pred>
+double smallest_with(double guess, Pred pred) {
+  std::int64_t lo = 0, hi = ordinal(kInf);  // pred(hi) holds; every r below lo fails
+  const std::int64_t g = ordinal(std::clamp(guess, 0.0, kInf));
+  std::int64_t step = 1;
+  if (pred(from_ordinal(g))) {
+    hi = g;
+    while (hi > 0) {
+      const std::int64_t probe = std::max<std::int64_t>(0, hi - step);
+      if (!pred(from_ordinal(probe))) {
+        lo = probe + 1;
+        break;
+      }
+      hi = probe;
+      step *= 2;
+    }
+  } else {
+    lo = g + 1;
+    while (lo < hi) {
+      const std::int64_t probe = std::min(hi, lo + step);
+      if (pred(from_ordinal(probe))) {
+        hi = probe;
+        break;
+      }
+      lo = probe + 1;
+      step *= 2;
+    }
+  }
+  while (lo < hi) {
+    const std::int64_t mid = lo + (hi - lo) / 2;
+    if (pred(from_ordinal(mid))) hi = mid;
+    else lo = mid + 1;
+  }
+  return from_ordinal(hi);
 }
+
+// Lower and upper n-th roots of v >= 0: the largest r with r^n <= v and the
+// smallest with r^n >= v, where r^n is bounded by directed powers, so that
+// root_down(v)^n <= v <= root_up(v)^n holds for the exact powers.
 double root_down(double v, int n) {
   if (v == 0.0 || v == kInf || n == 1) return v;
-  if (n == 2) return std::max(0.0, next_down(std::sqrt(v)));
-  double r = std::max(0.0, next_down(std::pow(v, 1.0 / n)));
-  for (int i = 0; r > 0.0 && power_bound(r, n, true) > v; ++i) r = i < 16 ? next_down(r) : r * (1.0 - 0x1p-40);
-  return r;
+  if (n == 2) return sqrt_down(v);
+  const double first_above = smallest_with(std::pow(v, 1.0 / n), [&](double r) { return pow_up(r, n) > v; });
+  return next_down(first_above);
 }
 double root_up(double v, int n) {
   if (v == 0.0 || v == kInf || n == 1) return v;
-  if (n == 2) return next_up(std::sqrt(v));
-  double r = next_up(std::pow(v, 1.0 / n));
-  for (int i = 0; r < kInf && power_bound(r, n, false) < v; ++i) r = i < 16 ? next_up(r) : r * (1.0 + 0x1p-40);
-  return r;
+  if (n == 2) return sqrt_up(v);
+  return smallest_with(std::pow(v, 1.0 / n), [&](double r) { return pow_down(r, n) >= v; });
 }
 // {x >= 0 : x^n in c}, for c with c >= 0 (n >= 1).
 Interval positive_root(const Interval& c, int n) {
   if (c.is_empty()) return c;
   return Interval::from_bounds(root_down(c.lo(), n), root_up(c.hi(), n));
+}
+// {x > 0 : x^-n in c}, for c >= 0 (n >= 1): x = 1 / root(c), computed through the
+// root first so that tiny c (whose reciprocal overflows) keeps a tight bound.
+Interval positive_inverse_root(const Interval& c, int n) {
+  if (c.is_empty() || c.hi() == 0.0) return Interval::empty();  // x^-n is never 0
+  const double r_lo = root_down(c.lo(), n), r_hi = root_up(c.hi(), n);
+  const double lo = r_hi == kInf ? 0.0 : div_down(1.0, r_hi);
+  const double hi = r_lo == 0.0 ? kInf : div_up(1.0, r_lo);
+  return Interval::from_bounds(lo, hi);
 }
 
 // Hull of the points of x inside the union of the periodic pieces
@@ -182,15 +229,9 @@ Interval pow_rev(const Interval& c, const Interval& x, int n) {
     return intersect(inner, x);
   }
   const int m = -n;
-  const Interval pos_part = intersect(c, Interval::pos_reals());
-  const Interval inv_pos = Interval(1.0) / pos_part;  // empty when c has no positive point
-  if (m % 2 == 0) {
-    const Interval root = positive_root(intersect(inv_pos, Interval::pos_reals()), m);
-    return hull(intersect(root, x), intersect(-root, x));
-  }
-  const Interval inv_neg = Interval(1.0) / intersect(-c, Interval::pos_reals());
-  const Interval pos = positive_root(intersect(inv_pos, Interval::pos_reals()), m);
-  const Interval neg = -positive_root(intersect(inv_neg, Interval::pos_reals()), m);
+  const Interval pos = positive_inverse_root(intersect(c, Interval::pos_reals()), m);
+  if (m % 2 == 0) return hull(intersect(pos, x), intersect(-pos, x));
+  const Interval neg = -positive_inverse_root(intersect(-c, Interval::pos_reals()), m);
   return hull(intersect(pos, x), intersect(neg, x));
 }
 

@@ -45,10 +45,16 @@ constexpr double step_down(double x, int steps) {
 inline constexpr int kLibmSteps = 4;
 
 // Directed basic operations. Each computes the round-to-nearest result r and the
-// exact error of that rounding (TwoSum for + and -, an fma for *, / and sqrt),
-// and steps r outward only when the error points outward: the result is the
-// correctly rounded-down (or up) value, never more than one ulp from r. Exact
-// results such as 0 + 0 stay exact, which keeps sign information (y = x^2 >= 0).
+// sign of the error of that rounding, and steps r outward only when the error
+// points outward: the result is the correctly rounded-down (or up) value, never
+// more than one ulp from r. Exact results such as 0 + 0 stay exact, which keeps
+// sign information (y = x^2 >= 0).
+//  - + and -: TwoSum gives the exact error.
+//  - *, / and sqrt: an fma computes the error term (a*b - r, a - r*b, x - r*r)
+//    exactly and rounds it once. Rounding keeps the sign: a negative error too
+//    small to represent becomes -0, and an exactly zero one is +0 (IEEE 754
+//    section 6.3). So std::signbit of the fma result says "the error is < 0"
+//    exactly, also for subnormal results; each test below is phrased that way.
 
 /// Exact error of r = RN(a + b): a + b = r + e (Knuth's TwoSum; needs no overflow).
 inline double two_sum_error(double a, double b, double r) {
@@ -59,12 +65,12 @@ inline double two_sum_error(double a, double b, double r) {
 inline double add_down(double a, double b) {
   const double r = a + b;
   if (!std::isfinite(r)) return r == kInf && std::isfinite(a) && std::isfinite(b) ? std::numeric_limits<double>::max() : r;
-  return two_sum_error(a, b, r) < 0.0 ? next_down(r) : r;
+  return two_sum_error(a, b, r) >= 0.0 ? r : next_down(r);  // a NaN error term steps too
 }
 inline double add_up(double a, double b) {
   const double r = a + b;
   if (!std::isfinite(r)) return r == -kInf && std::isfinite(a) && std::isfinite(b) ? -std::numeric_limits<double>::max() : r;
-  return two_sum_error(a, b, r) > 0.0 ? next_up(r) : r;
+  return two_sum_error(a, b, r) <= 0.0 ? r : next_up(r);
 }
 inline double sub_down(double a, double b) { return add_down(a, -b); }
 inline double sub_up(double a, double b) { return add_up(a, -b); }
@@ -75,34 +81,54 @@ inline double mul_down(double a, double b) {
   const double r = a * b;
   if (!std::isfinite(r)) return r == kInf && std::isfinite(a) && std::isfinite(b) ? std::numeric_limits<double>::max() : r;
   if (r == 0.0) return std::signbit(r) ? -std::numeric_limits<double>::denorm_min() : 0.0;  // underflow
-  const double e = std::fma(a, b, -r);  // exact unless the product is subnormal
-  if (std::fabs(r) < 0x1p-969) return next_down(r);  // fma error term may be inexact there
-  return e < 0.0 ? next_down(r) : r;
+  return std::signbit(std::fma(a, b, -r)) ? next_down(r) : r;  // a*b < r
 }
 inline double mul_up(double a, double b) { return -mul_down(-a, b); }
 
+/// Quotient with the limit convention x / inf = 0 (never called with b = 0).
 inline double div_down(double a, double b) {
   if (a == 0.0) return 0.0;
-  if (std::isinf(b)) return std::isinf(a) ? std::numeric_limits<double>::quiet_NaN() : 0.0;  // limit x / inf = 0
+  if (std::isinf(b)) return std::isinf(a) ? std::numeric_limits<double>::quiet_NaN() : 0.0;
+  if (b < 0.0) {  // same quotient with b > 0, so that the test below reads one way
+    a = -a;
+    b = -b;
+  }
   const double r = a / b;
   if (!std::isfinite(r)) return r == kInf && std::isfinite(a) ? std::numeric_limits<double>::max() : r;
   if (r == 0.0) return std::signbit(r) ? -std::numeric_limits<double>::denorm_min() : 0.0;  // underflow
-  if (std::fabs(r) < 0x1p-969 || std::fabs(a) < 0x1p-969) return next_down(r);  // remainder may be inexact
-  // a = r b + rem exactly; the true quotient is below r when rem / b < 0.
-  const double rem = std::fma(-r, b, a);
-  return (rem != 0.0 && (rem < 0.0) != (b < 0.0)) ? next_down(r) : r;
+  return std::signbit(std::fma(-r, b, a)) ? next_down(r) : r;  // a - r*b < 0, i.e. a/b < r
 }
 inline double div_up(double a, double b) { return -div_down(-a, b); }
 
+/// Square roots of x >= 0.
 inline double sqrt_down(double x) {
   const double r = std::sqrt(x);
-  if (r == 0.0 || std::isinf(r) || x < 0x1p-969) return r == 0.0 || std::isinf(r) ? r : next_down(r);
-  return std::fma(-r, r, x) < 0.0 ? next_down(r) : r;
+  if (r == 0.0 || std::isinf(r)) return r;
+  return std::signbit(std::fma(-r, r, x)) ? next_down(r) : r;  // x - r*r < 0
 }
 inline double sqrt_up(double x) {
   const double r = std::sqrt(x);
-  if (r == 0.0 || std::isinf(r) || x < 0x1p-969) return r == 0.0 || std::isinf(r) ? r : next_up(r);
-  return std::fma(-r, r, x) > 0.0 ? next_up(r) : r;
+  if (r == 0.0 || std::isinf(r)) return r;
+  return std::signbit(std::fma(r, r, -x)) ? next_up(r) : r;  // r*r - x < 0
+}
+
+/// x^n for x >= 0 and n >= 0, rounded down or up: binary powering where every
+/// product is rounded the same way, which is sound because all factors are >= 0.
+inline double pow_down(double x, int n) {
+  double result = 1.0;
+  for (double base = x; n > 0; n >>= 1) {
+    if (n & 1) result = mul_down(result, base);
+    if (n > 1) base = mul_down(base, base);
+  }
+  return result;
+}
+inline double pow_up(double x, int n) {
+  double result = 1.0;
+  for (double base = x; n > 0; n >>= 1) {
+    if (n & 1) result = mul_up(result, base);
+    if (n > 1) base = mul_up(base, base);
+  }
+  return result;
 }
 
 }  // namespace gesmi
