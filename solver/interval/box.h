@@ -77,6 +77,15 @@ struct NumTraits<gesmi::Interval> : GenericNumTraits<gesmi::Interval> {
   static inline int digits10() { return std::numeric_limits<double>::digits10; }
 };
 
+// Eigen's squaredNorm and norm square through abs2_impl, whose default is x * x;
+// sqr is tighter on intervals that contain 0 (x * x of [-1, 3] is [-3, 9]).
+namespace internal {
+template <>
+struct abs2_impl<gesmi::Interval> {
+  static gesmi::Interval run(const gesmi::Interval& x) { return gesmi::sqr(x); }
+};
+}  // namespace internal
+
 template <class BinaryOp>
 struct ScalarBinaryOpTraits<gesmi::Interval, double, BinaryOp> {
   using ReturnType = gesmi::Interval;

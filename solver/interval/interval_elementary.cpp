@@ -149,6 +149,21 @@ Interval atan(const Interval& x) {
 
 namespace {
 
+// Enclosure of the angle of the corner (y, x) of a box, y = 0 meaning +0 (the
+// upper side of the cut). Angles on the axes are exact multiples of pi/2, also as
+// limits at infinity (atan2(1, +inf) -> 0, atan2(1, -inf) -> pi); the others come
+// from libm, widened. An underflowed 0 (atan2(1e-300, 1e300) is 1e-600) is widened.
+Interval corner_angle(double y, double x) {
+  const Interval pi = Interval::pi(), half_pi = Interval::half_pi();
+  const bool finite_y = std::isfinite(y), finite_x = std::isfinite(x);
+  if ((y == 0.0 && x > 0.0) || (x == kInf && finite_y)) return Interval(0.0);
+  if ((y == 0.0 && x < 0.0) || (x == -kInf && finite_y && y >= 0.0)) return pi;
+  if (x == -kInf && finite_y) return -pi;  // y < 0: the limit from below the cut
+  if ((x == 0.0 || finite_x) && (x == 0.0 || !finite_y)) return y > 0.0 ? half_pi : -half_pi;
+  const double v = std::atan2(y, x);
+  return Interval::from_bounds(libm_down(v), libm_up(v));
+}
+
 // atan2 over a box that does not meet the cut {y = 0, x <= 0} except from above
 // (y >= +0 there): the angle is continuous, and the extreme angles of a box seen
 // from outside it are reached at its corners.
@@ -156,13 +171,9 @@ Interval atan2_from_corners(double yl, double yh, double xl, double xh) {
   const double pi_hi = Interval::pi().hi();
   double lo = kInf, hi = -kInf;
   const auto add_corner = [&](double y, double x) {
-    if (y == 0.0) y = 0.0;  // +0: the upper side of the cut
-    const double v = std::atan2(y, x);
-    // Exactly 0: atan2(+0, x > 0), and the limit atan2(finite y, +inf). Any other
-    // 0 is an underflow (atan2(1e-300, 1e300) is 1e-600) and is widened.
-    const bool exact = (y == 0.0 && x > 0.0) || (x == kInf && std::isfinite(y));
-    lo = std::min(lo, exact ? 0.0 : libm_down(v));
-    hi = std::max(hi, exact ? 0.0 : libm_up(v));
+    const Interval a = corner_angle(y == 0.0 ? 0.0 : y, x);
+    lo = std::min(lo, a.lo());
+    hi = std::max(hi, a.hi());
   };
   add_corner(yl, xl);
   add_corner(yl, xh);
