@@ -41,6 +41,14 @@ struct Mission {
   std::vector<double> gps_time;       // s
   std::vector<double> gps_longitude;  // deg WGS84
   std::vector<double> gps_latitude;   // deg WGS84
+  // The same fixes in the local frame, filled by io/ (geodesy): centre and
+  // half-width of the box that contains the true position (model bound converted
+  // to metres, the metric bound, and the conversion error, whichever is larger).
+  std::vector<double> gps_north, gps_east;                     // m
+  std::vector<double> gps_north_halfwidth, gps_east_halfwidth;  // m
+  // Largest angle between true north at a point of the mission and the local
+  // frame's north axis (meridian convergence), added to the heading bound (rad).
+  double heading_frame_margin = 0.0;
 
   // Mark table, M detections.
   std::vector<double> mark_time;        // s
@@ -57,6 +65,9 @@ struct Mission {
   // Ground truth of simulated missions (empty otherwise).
   std::vector<double> truth_x, truth_y, truth_z;  // local NED, m, N samples
   std::vector<double> truth_mines;                // K×3 row-major, local NED, m
+  std::vector<double> truth_missed_marks;         // X×3 row-major: time, mine, range of dropped detections
+  std::vector<std::int32_t> truth_marks_outlier;  // M: 1 for a corrupted mark
+  std::vector<std::int32_t> truth_gps_outlier;    // G: 1 for a corrupted fix
 
   std::size_t size() const { return time.size(); }
   std::size_t mark_count() const { return mark_time.size(); }

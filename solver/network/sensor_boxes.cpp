@@ -13,7 +13,11 @@ Interval SensorBoxes::reading(const std::vector<double>& values, const std::vect
 Interval SensorBoxes::roll(std::size_t k) const { return reading(m_.roll, m_.half_widths.roll, k, model_.roll); }
 Interval SensorBoxes::pitch(std::size_t k) const { return reading(m_.pitch, m_.half_widths.pitch, k, model_.pitch); }
 Interval SensorBoxes::heading(std::size_t k) const {
-  return reading(m_.heading, m_.half_widths.heading, k, model_.heading);
+  // The gyrocompass measures from true north, which turns against the local frame
+  // across the mission area (meridian convergence): widen by that angle.
+  const Interval h = reading(m_.heading, m_.half_widths.heading, k, model_.heading);
+  if (m_.heading_frame_margin == 0.0) return h;
+  return Interval(sub_down(h.lo(), m_.heading_frame_margin), add_up(h.hi(), m_.heading_frame_margin));
 }
 
 Vec3I SensorBoxes::velocity(std::size_t k) const {

@@ -1,0 +1,66 @@
+#include "io/geodesy.h"
+
+#include <GeographicLib/Constants.hpp>
+#include <GeographicLib/LocalCartesian.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "io/format_error.h"
+#include "solver/interval/rounding.h"
+
+namespace gesmi::io {
+
+LocalFrame::LocalFrame(const GeoOrigin& origin) : origin_(origin) {}
+
+NorthEast LocalFrame::to_local(double latitude, double longitude) const {
+  const GeographicLib::LocalCartesian frame(origin_.latitude, origin_.longitude, 0.0);
+  double east = 0, north = 0, up = 0;
+  frame.Forward(latitude, longitude, 0.0, east, north, up);
+  return {north, east};
+}
+
+GeoOrigin LocalFrame::to_geodetic(double north, double east) const {
+  const GeographicLib::LocalCartesian frame(origin_.latitude, origin_.longitude, 0.0);
+  // The point of the sea surface below (north, east) of the tangent plane.
+  double lat = 0, lon = 0, h = 0;
+  frame.Reverse(east, north, 0.0, lat, lon, h);
+  return {lat, lon};
+}
+
+void fill_local_gps(Mission& m, const std::string& source) {
+  const LocalFrame frame(m.origin);
+  const std::size_t g = m.gps_time.size();
+  m.gps_north.assign(g, 0.0);
+  m.gps_east.assign(g, 0.0);
+  m.gps_north_halfwidth.assign(g, 0.0);
+  m.gps_east_halfwidth.assign(g, 0.0);
+  const double a = GeographicLib::Constants::WGS84_a();
+  const double degree = std::numbers::pi / 180.0;
+  double farthest = 0.0;
+  for (std::size_t i = 0; i < g; ++i) {
+    const NorthEast p = frame.to_local(m.gps_latitude[i], m.gps_longitude[i]);
+    const double distance = std::hypot(p.north, p.east);
+    if (distance > kLocalFrameZone)
+      throw FormatError(source + ": /gps/lonlat: row " + std::to_string(i) + ": fix is " +
+                        std::to_string(static_cast<long>(distance)) + " m from the origin, beyond the " +
+                        std::to_string(static_cast<long>(kLocalFrameZone)) + " m zone of the local frame");
+    farthest = std::max(farthest, distance);
+    m.gps_north[i] = p.north;
+    m.gps_east[i] = p.east;
+    // A degree bound in metres: the radius of curvature never exceeds a / (1 - f)^2
+    // (< 1.01 a), and a longitude degree spans cos(latitude) of that.
+    const double radius = 1.01 * a;
+    const double lat_m = m.model.gps_lat_deg * degree * radius;
+    const double lon_m = m.model.gps_lon_deg * degree * radius * std::cos(m.gps_latitude[i] * degree);
+    m.gps_north_halfwidth[i] = add_up(std::max(lat_m, m.model.gps_metres), kLocalFrameError);
+    m.gps_east_halfwidth[i] = add_up(std::max(lon_m, m.model.gps_metres), kLocalFrameError);
+  }
+  // Meridian convergence over the mission area: the fixes' distance plus 2 km of
+  // survey around them, times tan(latitude) / R.
+  const double extent = std::min(farthest + 2000.0, kLocalFrameZone);
+  m.heading_frame_margin = extent / (0.99 * a) * std::fabs(std::tan(m.origin.latitude * degree)) * 1.01;
+}
+
+}  // namespace gesmi::io

@@ -1,0 +1,256 @@
+#include "io/mission_file.h"
+
+#include <cmath>
+
+#include "io/atomic_output.h"
+#include "io/format_error.h"
+#include "io/geodesy.h"
+#include "io/hdf5/h5_file.h"
+#include "io/sensor_model_attributes.h"
+#include "io/sonar_side.h"
+#include "solver/network/mission_network.h"
+
+namespace gesmi::io {
+namespace {
+
+constexpr const char* kFormat = "gesmi-mission";
+constexpr std::int64_t kFormatVersion = 1;
+
+const char* const kHalfWidthNames[] = {"roll", "pitch", "heading", "vx", "vy", "vz", "depth", "altitude"};
+
+std::vector<double>* half_width(NavHalfWidths& h, int i) {
+  std::vector<double>* all[] = {&h.roll, &h.pitch, &h.heading, &h.vx, &h.vy, &h.vz, &h.depth, &h.altitude};
+  return all[i];
+}
+const std::vector<double>* half_width(const NavHalfWidths& h, int i) {
+  return half_width(const_cast<NavHalfWidths&>(h), i);
+}
+
+std::string row_text(std::size_t row) { return "row " + std::to_string(row); }
+
+[[noreturn]] void bad(const std::string& source, const std::string& dataset, const std::string& what) {
+  throw FormatError(source + ": " + dataset + ": " + what);
+}
+
+void expect_finite(const std::vector<double>& v, const std::string& source, const std::string& dataset,
+                   const char* field) {
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i])) bad(source, dataset, row_text(i) + ": " + field + " is " + (std::isnan(v[i]) ? "NaN" : "infinite"));
+}
+
+void expect_size(std::size_t size, std::size_t expected, const std::string& source, const std::string& dataset) {
+  if (size != expected)
+    bad(source, dataset, "expected " + std::to_string(expected) + " rows, found " + std::to_string(size));
+}
+
+}  // namespace
+
+void validate_mission(const Mission& m, const std::string& source) {
+  const std::size_t n = m.size();
+  if (n < 2) bad(source, "/nav/time", "a mission needs at least 2 samples, found " + std::to_string(n));
+  expect_finite(m.time, source, "/nav/time", "time");
+  for (std::size_t k = 1; k < n; ++k)
+    if (!(m.time[k] > m.time[k - 1]))
+      bad(source, "/nav/time", row_text(k) + ": time does not increase (" + std::to_string(m.time[k]) + " after " +
+                                   std::to_string(m.time[k - 1]) + ")");
+  const std::pair<const std::vector<double>*, const char*> nav[] = {
+      {&m.roll, "/nav/attitude roll"}, {&m.pitch, "/nav/attitude pitch"}, {&m.heading, "/nav/attitude heading"},
+      {&m.vx, "/nav/velocity x"},      {&m.vy, "/nav/velocity y"},        {&m.vz, "/nav/velocity z"},
+      {&m.altitude, "/nav/altitude"},  {&m.depth, "/nav/depth"}};
+  for (const auto& [values, name] : nav) {
+    expect_size(values->size(), n, source, name);
+    expect_finite(*values, source, name, "value");
+  }
+  for (int i = 0; i < 8; ++i) {
+    const std::vector<double>& hw = *half_width(m.half_widths, i);
+    if (hw.empty()) continue;
+    const std::string name = std::string("/nav/half_widths/") + kHalfWidthNames[i];
+    expect_size(hw.size(), n, source, name);
+    for (std::size_t k = 0; k < n; ++k)
+      if (!(hw[k] >= 0.0) || !std::isfinite(hw[k])) bad(source, name, row_text(k) + ": half-width must be finite and >= 0");
+  }
+  const std::string model_error = m.model.validate();
+  if (!model_error.empty()) bad(source, "/model", model_error);
+  if (m.mine_count < 0 || m.mine_count > kMaxMines)
+    bad(source, "/", "mine_count must be between 0 and " + std::to_string(kMaxMines));
+  if (!std::isfinite(m.origin.latitude) || std::fabs(m.origin.latitude) > 89.0 || !std::isfinite(m.origin.longitude) ||
+      std::fabs(m.origin.longitude) > 180.0)
+    bad(source, "/", "origin_latitude/origin_longitude out of range");
+
+  // GPS.
+  const std::size_t g = m.gps_time.size();
+  expect_size(m.gps_latitude.size(), g, source, "/gps/lonlat");
+  expect_size(m.gps_longitude.size(), g, source, "/gps/lonlat");
+  expect_finite(m.gps_time, source, "/gps/time", "time");
+  for (std::size_t i = 0; i < g; ++i) {
+    if (m.gps_time[i] < m.time.front() || m.gps_time[i] > m.time.back())
+      bad(source, "/gps/time", row_text(i) + ": fix time " + std::to_string(m.gps_time[i]) + " s is outside the mission");
+    if (!std::isfinite(m.gps_latitude[i]) || std::fabs(m.gps_latitude[i]) > 90.0)
+      bad(source, "/gps/lonlat", row_text(i) + ": latitude must be in [-90, 90]");
+    if (!std::isfinite(m.gps_longitude[i]) || std::fabs(m.gps_longitude[i]) > 180.0)
+      bad(source, "/gps/lonlat", row_text(i) + ": longitude must be in [-180, 180]");
+  }
+
+  // Marks.
+  const std::size_t mk = m.mark_time.size();
+  expect_size(m.mark_mine.size(), mk, source, "/marks/mine");
+  expect_size(m.mark_range.size(), mk, source, "/marks/range");
+  expect_size(m.mark_side.size(), mk, source, "/marks/side");
+  for (std::size_t j = 0; j < mk; ++j) {
+    if (!std::isfinite(m.mark_time[j]) || m.mark_time[j] < m.time.front() || m.mark_time[j] > m.time.back())
+      bad(source, "/marks/time", row_text(j) + ": mark time " + std::to_string(m.mark_time[j]) +
+                                     " s is outside the mission [" + std::to_string(m.time.front()) + ", " +
+                                     std::to_string(m.time.back()) + "] s");
+    if (!std::isfinite(m.mark_range[j]) || m.mark_range[j] < 0.0)
+      bad(source, "/marks/range", row_text(j) + ": range must be a finite number >= 0");
+    if (m.mark_range[j] > m.model.sonar_max_range + m.model.mark_range)
+      bad(source, "/marks/range", row_text(j) + ": range " + std::to_string(m.mark_range[j]) +
+                                      " m is beyond the sonar's maximum range (" + std::to_string(m.model.sonar_max_range) + " m)");
+    if (m.mark_side[j] != 1 && m.mark_side[j] != -1)
+      bad(source, "/marks/side", row_text(j) + ": side must be +1 (starboard) or -1 (port), found " + std::to_string(m.mark_side[j]));
+    if (m.mark_mine[j] < -1 || m.mark_mine[j] >= m.mine_count)
+      bad(source, "/marks/mine", row_text(j) + ": mine " + std::to_string(m.mark_mine[j]) + " is not one of the mission's " +
+                                     std::to_string(m.mine_count) + " mines (-1 for unknown)");
+  }
+
+  // Truth.
+  if (!m.truth_x.empty()) {
+    expect_size(m.truth_x.size(), n, source, "/truth/position");
+    expect_size(m.truth_y.size(), n, source, "/truth/position");
+    expect_size(m.truth_z.size(), n, source, "/truth/position");
+  }
+  if (!m.truth_mines.empty()) expect_size(m.truth_mines.size(), 3 * static_cast<std::size_t>(m.mine_count), source, "/truth/mines (K x 3)");
+  if (!m.truth_marks_outlier.empty()) expect_size(m.truth_marks_outlier.size(), mk, source, "/truth/marks_outlier");
+  if (!m.truth_gps_outlier.empty()) expect_size(m.truth_gps_outlier.size(), g, source, "/truth/gps_outlier");
+}
+
+Mission read_mission(const std::string& path) {
+  const H5File f = H5File::open_read(path);
+  Mission m;
+  if (f.string_attribute("/", "format") != std::optional<std::string>(kFormat))
+    throw FormatError(path + ": not a gesmi mission file (attribute 'format' is not '" + kFormat + "')");
+  const auto required_double = [&](const std::string& object, const std::string& name) {
+    const auto v = f.double_attribute(object, name);
+    if (!v) throw FormatError(path + ": " + object + ": missing attribute " + name);
+    return *v;
+  };
+  m.origin.latitude = required_double("/", "origin_latitude");
+  m.origin.longitude = required_double("/", "origin_longitude");
+  const auto mines = f.int_attribute("/", "mine_count");
+  if (!mines) throw FormatError(path + ": /: missing attribute mine_count");
+  if (*mines < 0 || *mines > kMaxMines) throw FormatError(path + ": /: mine_count must be between 0 and 64");
+  m.mine_count = static_cast<int>(*mines);
+  for (const ModelField& field : model_fields()) m.model.*field.member = required_double("/model", std::string(field.key));
+  const auto side = f.string_attribute("/model", "sonar_side");
+  if (!side) throw FormatError(path + ": /model: missing attribute sonar_side");
+  m.model.sonar_side = parse_sonar_side(*side, path + ": /model: sonar_side");
+
+  // Navigation, read column by column into the flat arrays (one copy of the data).
+  m.time = f.read_doubles("/nav/time");
+  const std::size_t n = m.time.size();
+  const auto columns = [&](const std::string& dataset, std::vector<double>* out[3]) {
+    const H5Shape s = f.shape(dataset);
+    if (s.rank != 2 || s.columns != 3 || s.rows != n)
+      throw FormatError(path + ": " + dataset + ": expected " + std::to_string(n) + " x 3, found " + std::to_string(s.rows) +
+                        " x " + std::to_string(s.columns));
+    for (std::size_t c = 0; c < 3; ++c) {
+      out[c]->resize(n);
+      f.read_column_into(dataset, c, *out[c]);
+    }
+  };
+  std::vector<double>* attitude[3] = {&m.roll, &m.pitch, &m.heading};
+  std::vector<double>* velocity[3] = {&m.vx, &m.vy, &m.vz};
+  columns("/nav/attitude", attitude);
+  columns("/nav/velocity", velocity);
+  m.altitude = f.read_doubles("/nav/altitude");
+  m.depth = f.read_doubles("/nav/depth");
+  for (int i = 0; i < 8; ++i) {
+    const std::string name = std::string("/nav/half_widths/") + kHalfWidthNames[i];
+    if (f.has(name)) *half_width(m.half_widths, i) = f.read_doubles(name);
+  }
+  if (f.has("/gps/time")) {
+    m.gps_time = f.read_doubles("/gps/time");
+    const H5Shape s = f.shape("/gps/lonlat");
+    if (s.rank != 2 || s.columns != 2 || s.rows != m.gps_time.size())
+      throw FormatError(path + ": /gps/lonlat: expected " + std::to_string(m.gps_time.size()) + " x 2");
+    m.gps_longitude.resize(s.rows);
+    m.gps_latitude.resize(s.rows);
+    f.read_column_into("/gps/lonlat", 0, m.gps_longitude);
+    f.read_column_into("/gps/lonlat", 1, m.gps_latitude);
+  }
+  if (f.has("/marks/time")) {
+    m.mark_time = f.read_doubles("/marks/time");
+    m.mark_mine = f.read_ints("/marks/mine");
+    m.mark_range = f.read_doubles("/marks/range");
+    m.mark_side = f.read_ints("/marks/side");
+  }
+  if (f.has("/truth/position")) {
+    std::vector<double>* position[3] = {&m.truth_x, &m.truth_y, &m.truth_z};
+    columns("/truth/position", position);
+  }
+  if (f.has("/truth/mines")) m.truth_mines = f.read_doubles("/truth/mines");
+  if (f.has("/truth/missed_marks")) m.truth_missed_marks = f.read_doubles("/truth/missed_marks");
+  if (f.has("/truth/marks_outlier")) m.truth_marks_outlier = f.read_ints("/truth/marks_outlier");
+  if (f.has("/truth/gps_outlier")) m.truth_gps_outlier = f.read_ints("/truth/gps_outlier");
+  validate_mission(m, path);
+  fill_local_gps(m, path);
+  return m;
+}
+
+void write_mission(const Mission& m, const std::string& path) {
+  validate_mission(m, path);
+  AtomicOutput out(path);
+  {
+    H5File f = H5File::create(out.temp_path());
+    const std::size_t n = m.size();
+    const auto interleave = [&](const std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& c) {
+      std::vector<double> rows(3 * a.size());
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        rows[3 * k] = a[k];
+        rows[3 * k + 1] = b[k];
+        rows[3 * k + 2] = c[k];
+      }
+      return rows;
+    };
+    f.write("/nav/time", m.time, n);
+    f.write("/nav/attitude", interleave(m.roll, m.pitch, m.heading), n, 3, 2);
+    f.write("/nav/velocity", interleave(m.vx, m.vy, m.vz), n, 3, 2);
+    f.write("/nav/altitude", m.altitude, n);
+    f.write("/nav/depth", m.depth, n);
+    for (int i = 0; i < 8; ++i) {
+      const std::vector<double>& hw = *half_width(m.half_widths, i);
+      if (!hw.empty()) f.write(std::string("/nav/half_widths/") + kHalfWidthNames[i], hw, n);
+    }
+    const std::size_t g = m.gps_time.size();
+    f.write("/gps/time", m.gps_time, g);
+    std::vector<double> lonlat(2 * g);
+    for (std::size_t i = 0; i < g; ++i) {
+      lonlat[2 * i] = m.gps_longitude[i];
+      lonlat[2 * i + 1] = m.gps_latitude[i];
+    }
+    f.write("/gps/lonlat", lonlat, g, 2, 2);
+    const std::size_t mk = m.mark_count();
+    f.write("/marks/time", m.mark_time, mk);
+    f.write("/marks/mine", m.mark_mine, mk);
+    f.write("/marks/range", m.mark_range, mk);
+    f.write("/marks/side", m.mark_side, mk);
+    if (m.has_truth()) f.write("/truth/position", interleave(m.truth_x, m.truth_y, m.truth_z), n, 3, 2);
+    if (!m.truth_mines.empty()) f.write("/truth/mines", m.truth_mines, m.truth_mines.size() / 3, 3, 2);
+    if (!m.truth_missed_marks.empty())
+      f.write("/truth/missed_marks", m.truth_missed_marks, m.truth_missed_marks.size() / 3, 3, 2);
+    if (!m.truth_marks_outlier.empty()) f.write("/truth/marks_outlier", m.truth_marks_outlier, mk);
+    if (!m.truth_gps_outlier.empty()) f.write("/truth/gps_outlier", m.truth_gps_outlier, g);
+    f.set_attribute("/", "format", std::string(kFormat));
+    f.set_attribute("/", "format_version", kFormatVersion);
+    f.set_attribute("/", "origin_latitude", m.origin.latitude);
+    f.set_attribute("/", "origin_longitude", m.origin.longitude);
+    f.set_attribute("/", "mine_count", static_cast<std::int64_t>(m.mine_count));
+    f.create_group("/model");
+    for (const ModelField& field : model_fields()) f.set_attribute("/model", std::string(field.key), m.model.*field.member);
+    f.set_attribute("/model", "sonar_side", std::string(sonar_side_name(m.model.sonar_side)));
+    f.close();
+  }
+  out.commit();
+}
+
+}  // namespace gesmi::io

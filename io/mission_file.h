@@ -1,0 +1,21 @@
+#pragma once
+// The HDF5 mission file (docs/formats.md): navigation, GPS fixes, mark table,
+// origin, sensor model and, for simulated missions, the truth. read_mission()
+// validates everything and names file, dataset, row, field and reason on error.
+
+#include <string>
+
+#include "solver/mission/mission.h"
+
+namespace gesmi::io {
+
+/// Reads and validates a mission; fills the GPS fixes in the local frame.
+Mission read_mission(const std::string& path);
+/// Writes a mission atomically (temporary name, then rename).
+void write_mission(const Mission& mission, const std::string& path);
+
+/// The validation read_mission() applies, for missions built in memory (importers,
+/// simulator): throws FormatError prefixed with `source`.
+void validate_mission(const Mission& mission, const std::string& source);
+
+}  // namespace gesmi::io
