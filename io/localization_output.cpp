@@ -61,6 +61,8 @@ std::string localization_summary(const LocalizationProblem& p, const Localizatio
                   step.epsilon, step.inner_boxes, step.boundary_boxes, step.boxes_visited, step.seconds);
     if (!g.found)
       s += "no consistent pose found for any number of outliers tried\n";
+    else if (g.exact() && g.q_star == 0)
+      s += "minimal number of outliers q* = 0: every measurement is consistent\n";
     else if (g.exact())
       s += format("minimal number of outliers q* = %d (every q < %d proved impossible)\n", g.q_star, g.q_star);
     else

@@ -184,12 +184,19 @@ void read_prior(const Reader& r, const YAML::Node& root, LocalizationProblem& p)
 
 void read_settings(const Reader& r, const YAML::Node& root, LocalizationProblem& p) {
   const YAML::Node solver = r.required(root, "", "solver");
-  r.only_keys(solver, "solver", {"epsilon", "epsilon_min", "max_boxes", "max_seconds"});
+  r.only_keys(solver, "solver", {"epsilon", "epsilon_min", "theta_scale", "contractors", "max_boxes", "max_seconds"});
   p.epsilon = r.number(r.required(solver, "solver", "epsilon"), "solver.epsilon");
   if (!(p.epsilon > 0.0)) r.fail(solver["epsilon"], "solver.epsilon", "must be positive");
   p.epsilon_min = r.number_or(solver, "solver", "epsilon_min", p.epsilon / 64.0);
   if (!(p.epsilon_min > 0.0 && p.epsilon_min <= p.epsilon))
     r.fail(solver["epsilon_min"], "solver.epsilon_min", "must be positive and at most epsilon");
+  p.theta_scale = r.number_or(solver, "solver", "theta_scale", 1.0);
+  if (!(p.theta_scale > 0.0)) r.fail(solver["theta_scale"], "solver.theta_scale", "must be positive");
+  if (const YAML::Node c = solver["contractors"]) {
+    if (!c.IsScalar() || (c.Scalar() != "true" && c.Scalar() != "false"))
+      r.fail(c, "solver.contractors", "expected true or false");
+    p.use_contractors = c.Scalar() == "true";
+  }
   if (solver["max_boxes"]) {
     const long long n = r.integer(solver["max_boxes"], "solver.max_boxes");
     if (n <= 0) r.fail(solver["max_boxes"], "solver.max_boxes", "must be positive");

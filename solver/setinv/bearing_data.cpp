@@ -54,17 +54,21 @@ void BearingData::evaluate(const Box& box, int depth, std::span<IBool> out, int 
     for (std::size_t r = 0; r < n_landmarks && !explained.is_true(); ++r) {
       if (!test_bit(mine, r)) continue;
       const std::size_t kr = k * n_landmarks + r;
+      // Bearing first: visibility (the costly part) only matters inside the window.
       if (!fresh_[kr]) {
-        if (visible[kr].is_maybe()) visible[kr] = landmark_visible(position_[k], landmarks_[r], walls_);
-        if (!visible[kr].is_false()) bearing_[kr] = landmark_bearing(position_[k], zero_[k], landmarks_[r]);
+        bearing_[kr] = landmark_bearing(position_[k], zero_[k], landmarks_[r]);
         fresh_[kr] = 1;
-      }
-      if (visible[kr].is_false()) {
-        clear_bit(mine, r);
-        continue;
       }
       const IBool inside = angle_within(bearing_[kr], measurements_[m].bearing, sensor.precision);
       if (inside.is_false()) {
+        clear_bit(mine, r);
+        continue;
+      }
+      if (visible[kr].is_maybe() && fresh_[kr] == 1) {
+        visible[kr] = landmark_visible(position_[k], landmarks_[r], walls_);
+        fresh_[kr] = 2;  // visibility refreshed on this box
+      }
+      if (visible[kr].is_false()) {
         clear_bit(mine, r);
         continue;
       }

@@ -15,11 +15,20 @@
 
 namespace gesmi {
 
+/// Direction angle of the vector (dx, dy), in any window: the interval atan2 is
+/// [-pi, pi] as soon as a box crosses its cut (the negative x axis), so a box on
+/// the left is turned by pi first and the result is an interval around pi.
+inline double direction_angle(double dy, double dx) { return std::atan2(dy, dx); }
+inline Interval direction_angle(const Interval& dy, const Interval& dx) {
+  if (dx.hi() < 0.0 && dy.lo() < 0.0 && dy.hi() >= 0.0) return atan2(-dy, -dx) + Interval::pi();
+  return atan2(dy, dx);
+}
+
 /// Bearing of landmark l seen from a sensor at s whose zero direction is `zero`
-/// (world angle), not wrapped: atan2 minus the zero direction.
+/// (world angle), not wrapped: the direction of l minus the zero direction.
 template <class T>
 T landmark_bearing(const Vec2T<T>& s, const T& zero, const LandmarkPoint& l) {
-  return atan2(T(l.y) - s.y, T(l.x) - s.x) - zero;
+  return direction_angle(T(l.y) - s.y, T(l.x) - s.x) - zero;
 }
 
 /// Is the angle a inside [centre - delta, centre + delta] modulo 2 pi?
@@ -47,6 +56,12 @@ inline IBool angle_within(const Interval& a, double centre, double delta) {
 /// collinear contacts do not block (a landmark may sit on a wall).
 template <class T>
 BoolOf<T> sight_crosses(const Vec2T<T>& s, const LandmarkPoint& l, const Segment& w) {
+  // Segments whose bounding boxes are apart cannot cross: most walls end here.
+  if constexpr (is_interval_v<T>) {
+    if (std::max(s.x.hi(), l.x) < std::min(w.ax, w.bx) || std::min(s.x.lo(), l.x) > std::max(w.ax, w.bx) ||
+        std::max(s.y.hi(), l.y) < std::min(w.ay, w.by) || std::min(s.y.lo(), l.y) > std::max(w.ay, w.by))
+      return IBool(false);
+  }
   const Vec2T<T> sl = lift<T>(l.x, l.y) - s;
   const T d1 = det(sl, lift<T>(w.ax, w.ay) - s), d2 = det(sl, lift<T>(w.bx, w.by) - s);
   const T d3 = det(lift<T>(w.bx, w.by) - lift<T>(w.ax, w.ay), s - lift<T>(w.ax, w.ay));

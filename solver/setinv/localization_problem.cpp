@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "solver/setinv/localization_data.h"
+#include "solver/setinv/bearing_contractor.h"
 #include "solver/setinv/range_contractor.h"
 
 namespace gesmi {
@@ -64,6 +65,7 @@ std::string LocalizationProblem::validate() const {
   if (!(epsilon > 0.0) || !(epsilon_min > 0.0) || epsilon_min > epsilon) return "need 0 < epsilon_min <= epsilon";
   if (outliers < 0 || outliers > static_cast<int>(datum_count())) return "outliers must be between 0 and the number of measurements";
   if (extra_outliers < 0) return "extra outliers must not be negative";
+  if (!(theta_scale > 0.0) || !std::isfinite(theta_scale)) return "theta_scale must be positive and finite";
   return {};
 }
 
@@ -74,18 +76,22 @@ LocalizationResult localize(const LocalizationProblem& problem,
   const HalfPlanes prior{problem.constraints};
   SiviaOptions sivia_options;
   sivia_options.epsilon = problem.epsilon;
+  sivia_options.scale = {1.0, 1.0, problem.theta_scale};
   sivia_options.periodic_dimension = 2;
   sivia_options.period = kTwoPi;
   sivia_options.max_boxes = problem.max_boxes;
   sivia_options.max_seconds = problem.max_seconds;
   sivia_options.progress = progress;
   LocalizationResult result;
-  const bool contract = problem.use_contractors && !problem.ranges.empty();
-  const CtcRangeRelaxed ctc(problem.map.walls, problem.range_sensors, problem.ranges);
+  // Contractors before bisection (Remark 5 of seed 004), each valid for S_q.
+  const CtcPair<CtcRangeRelaxed, CtcBearingRelaxed> ctc{
+      CtcRangeRelaxed(problem.map.walls, problem.range_sensors, problem.ranges),
+      CtcBearingRelaxed(problem.map.landmarks, problem.bearing_sensors, problem.bearings)};
   if (problem.policy == OutlierPolicy::fixed) {
     result.q = problem.outliers;
-    result.paving = contract ? sivia_q(data, problem.outliers, problem.priors, sivia_options, prior, ctc.with_outliers(problem.outliers))
-                             : sivia_q(data, problem.outliers, problem.priors, sivia_options, prior);
+    result.paving = problem.use_contractors
+                        ? sivia_q(data, problem.outliers, problem.priors, sivia_options, prior, ctc.with_outliers(problem.outliers))
+                        : sivia_q(data, problem.outliers, problem.priors, sivia_options, prior);
     result.found = !result.paving.inner.empty() || !result.paving.boundary.empty();
   } else {
     GomneOptions options;
@@ -94,7 +100,8 @@ LocalizationResult localize(const LocalizationProblem& problem,
     options.extra_outliers = problem.extra_outliers;
     options.max_outliers = problem.max_outliers;
     options.sivia = sivia_options;
-    GomneResult g = contract ? gomne(data, problem.priors, options, prior, ctc) : gomne(data, problem.priors, options, prior);
+    GomneResult g = problem.use_contractors ? gomne(data, problem.priors, options, prior, ctc)
+                                            : gomne(data, problem.priors, options, prior);
     result.q = std::max(0, g.q_used);
     result.found = g.found;
     result.paving = std::move(g.paving);

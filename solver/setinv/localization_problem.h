@@ -38,6 +38,9 @@ struct LocalizationProblem {
   std::vector<Box> priors;             // boxes (x, y, theta), theta in radians
   std::vector<HalfPlane> constraints;  // all must hold
   double epsilon = 0.02;               // SIVIA accuracy (GOMNE's epsilon0)
+  /// Weight of theta in box widths (metres per radian): larger bisects theta earlier
+  /// and makes theta's accuracy epsilon / theta_scale.
+  double theta_scale = 1.0;
   double epsilon_min = 1e-4;           // GOMNE's Remark 3 floor
   OutlierPolicy policy = OutlierPolicy::fixed;
   int outliers = 0;                    // q for the fixed policy
