@@ -1,0 +1,114 @@
+// gesmi localize, run as a program: outputs of a good run, and bad inputs that give
+// one line on stderr, exit code 2 and no output folder.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "tests/support/paths.h"
+#include "tests/support/run_command.h"
+
+namespace gesmi::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string scenario(const std::string& name) { return source_dir() + "/missions/localization/" + name; }
+
+std::string read(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(LocalizeCli, WritesPavingsComponentsSummaryAndPicture) {
+  const std::string out = temp_folder("localize") + "/triangle";
+  const CommandResult r = run_gesmi({"localize", scenario("triangle_two_hypotheses.yaml"), "-o", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("hypotheses (connected components): 2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("holds the true pose"), std::string::npos) << r.out;
+  for (const char* f : {"inner.csv", "boundary.csv", "components.csv", "summary.txt", "paving.png"})
+    EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
+  EXPECT_EQ(read(out + "/summary.txt"), r.out);
+  const std::string components = read(out + "/components.csv");
+  EXPECT_EQ(line_count(components), 3);
+  EXPECT_EQ(read(out + "/inner.csv").rfind("component,x_lo,x_hi,y_lo,y_hi,theta_lo_rad,theta_hi_rad\n", 0), 0u);
+  // No temporary file is left behind.
+  for (const auto& e : fs::directory_iterator(out)) EXPECT_EQ(e.path().string().find(".tmp-"), std::string::npos);
+}
+
+TEST(LocalizeCli, SimulatePrintsMeasurementsAndWritesNothing) {
+  const CommandResult r = run_gesmi({"localize", scenario("belt24_outliers.yaml"), "--simulate", "--seed", "3"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("measurements:\n", 0), 0u);
+  EXPECT_EQ(line_count(r.out), 25);
+}
+
+struct BadRun {
+  std::string text;        // scenario content ("" = use `file`)
+  std::string file;        // existing scenario
+  std::vector<std::string> extra;
+  std::string must_name;
+};
+
+TEST(LocalizeCli, BadInputIsOneLineExitTwoAndNothingWritten) {
+  const std::string dir = temp_folder("localize_bad");
+  std::string valid = read(scenario("triangle_two_hypotheses.yaml"));
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string t = valid;
+    t.replace(t.find(from), from.size(), to);
+    return t;
+  };
+  const BadRun cases[] = {
+      {with("half_aperture_deg: 12, precision: 0.02}\n  - {name: T2", "half_aperture_deg: 90, precision: 0.02}\n  - {name: T2"), "", {}, "half_aperture_deg"},
+      {with("epsilon: 0.01", "epsilon: -1"), "", {}, "solver.epsilon"},
+      {with("policy: fixed", "policy: sometimes"), "", {}, "outliers.policy"},
+      {with("sensor: T3,", "sensor: T9,"), "", {}, "unknown sensor"},
+      {"map: [unclosed\n", "", {}, "not valid YAML"},
+      {"", "/no/such/scenario.yaml", {}, "cannot open"},
+      {"", scenario("triangle_two_hypotheses.yaml"), {"--frobnicate"}, "frobnicate"},
+  };
+  int k = 0;
+  for (const BadRun& c : cases) {
+    std::string path = c.file;
+    if (path.empty()) {
+      path = dir + "/bad" + std::to_string(k) + ".yaml";
+      std::ofstream(path) << c.text;
+    }
+    const std::string out = dir + "/out" + std::to_string(k++);
+    std::vector<std::string> args{"localize", path, "-o", out};
+    args.insert(args.end(), c.extra.begin(), c.extra.end());
+    const CommandResult r = run_gesmi(args);
+    EXPECT_EQ(r.exit_code, 2) << c.must_name << ": " << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(c.must_name), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_FALSE(fs::exists(out)) << out;
+  }
+}
+
+TEST(LocalizeCli, MissingOutputFolderParentIsRefusedBeforeSolving) {
+  const CommandResult r = run_gesmi({"localize", scenario("triangle_two_hypotheses.yaml"), "-o", "/no/such/parent/out"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+}
+
+TEST(LocalizeCli, NoConsistentPoseExitsThreeWithAResult) {
+  // Fixed policy, no outlier allowed, one range far beyond any wall: empty set.
+  const std::string dir = temp_folder("localize_empty");
+  std::string t = read(scenario("triangle_two_hypotheses.yaml"));
+  const std::string from = "{sensor: T1, range: ";
+  const auto at = t.find(from) + from.size();
+  t.replace(at, t.find('}', at) - at, "40.0");
+  std::ofstream(dir + "/empty.yaml") << t;
+  const CommandResult r = run_gesmi({"localize", dir + "/empty.yaml", "-o", dir + "/out"});
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/out/summary.txt"));
+  EXPECT_NE(r.out.find("hypotheses (connected components): 0"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace gesmi::test
