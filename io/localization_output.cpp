@@ -7,6 +7,7 @@
 
 #include "io/atomic_output.h"
 #include "io/format_error.h"
+#include "io/localization_hdf5.h"
 #include "io/localization_picture.h"
 
 namespace gesmi::io {
@@ -155,6 +156,8 @@ std::vector<std::string> write_localization_outputs(const std::string& folder, c
   text("boundary.csv", paving_csv(r.paving.boundary, boundary_component));
   text("components.csv", components_csv(p, r));
   text("summary.txt", localization_summary(p, r));
+  write_localization_hdf5(base + "paving.h5", p, r);
+  written.push_back(base + "paving.h5");
   write_localization_picture(base + "paving.png", p, r);
   written.push_back(base + "paving.png");
   return written;

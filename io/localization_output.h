@@ -19,7 +19,7 @@ std::string paving_csv(const Paving& paving, const std::vector<int>& component_o
 /// One line per hypothesis (component).
 std::string components_csv(const LocalizationProblem& problem, const LocalizationResult& result);
 
-/// Writes inner.csv, boundary.csv, components.csv, summary.txt, paving.png into
+/// Writes inner.csv, boundary.csv, components.csv, summary.txt, paving.h5, paving.png into
 /// `folder` (created if missing); returns the paths written.
 std::vector<std::string> write_localization_outputs(const std::string& folder, const LocalizationProblem& problem,
                                                     const LocalizationResult& result);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/hdf5/h5_file.h"
 #include "tests/support/paths.h"
 #include "tests/support/run_command.h"
 
@@ -30,12 +31,18 @@ TEST(LocalizeCli, WritesPavingsComponentsSummaryAndPicture) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("hypotheses (connected components): 2"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("holds the true pose"), std::string::npos) << r.out;
-  for (const char* f : {"inner.csv", "boundary.csv", "components.csv", "summary.txt", "paving.png"})
+  for (const char* f : {"inner.csv", "boundary.csv", "components.csv", "summary.txt", "paving.h5", "paving.png"})
     EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
   EXPECT_EQ(read(out + "/summary.txt"), r.out);
   const std::string components = read(out + "/components.csv");
   EXPECT_EQ(line_count(components), 3);
   EXPECT_EQ(read(out + "/inner.csv").rfind("component,x_lo,x_hi,y_lo,y_hi,theta_lo_rad,theta_hi_rad\n", 0), 0u);
+  // The HDF5 file holds the same boxes as the CSV files.
+  const io::H5File h5 = io::H5File::open_read(out + "/paving.h5");
+  EXPECT_EQ(static_cast<int>(h5.shape("/inner/boxes").rows) + 1, line_count(read(out + "/inner.csv")));
+  EXPECT_EQ(static_cast<int>(h5.shape("/boundary/boxes").rows) + 1, line_count(read(out + "/boundary.csv")));
+  EXPECT_EQ(h5.shape("/components/hull").rows, 2u);
+  EXPECT_EQ(h5.string_attribute("/", "scenario").value_or(""), "triangle_two_hypotheses");
   // No temporary file is left behind.
   for (const auto& e : fs::directory_iterator(out)) EXPECT_EQ(e.path().string().find(".tmp-"), std::string::npos);
 }
@@ -107,6 +114,7 @@ TEST(LocalizeCli, NoConsistentPoseExitsThreeWithAResult) {
   const CommandResult r = run_gesmi({"localize", dir + "/empty.yaml", "-o", dir + "/out"});
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_TRUE(fs::exists(dir + "/out/summary.txt"));
+  EXPECT_EQ(io::H5File::open_read(dir + "/out/paving.h5").shape("/inner/boxes").rows, 0u);
   EXPECT_NE(r.out.find("hypotheses (connected components): 0"), std::string::npos) << r.out;
 }
 
