@@ -70,19 +70,38 @@ Interval sin_or_cos(const Interval& x, bool cosine) {
   return periodic_range(x.lo(), x.hi(), cosine);
 }
 
+// 1 / v^m for v >= 0, rounded down or up. Two enclosures, 1 / v^m and (1/v)^m,
+// each stay tight where the other over- or underflows (v = 1e300, m = 2 gives
+// about 1e-600, not 1/DBL_MAX); the tighter bound is kept.
+double recip_pow_down(double v, int m) {
+  if (v == kInf) return 0.0;
+  if (v == 0.0) return kInf;
+  const double p = pow_up(v, m);
+  return std::max(p == kInf ? 0.0 : div_down(1.0, p), pow_down(div_down(1.0, v), m));
+}
+double recip_pow_up(double v, int m) {
+  if (v == 0.0) return kInf;
+  const double p = pow_down(v, m);
+  return std::min(p == 0.0 ? kInf : div_up(1.0, p), pow_up(div_up(1.0, v), m));
+}
+
+// x^-m for m >= 1 (IEEE 1788 pown): decreasing in |x| on each side of 0.
+Interval pow_negative_exponent(const Interval& x, int m) {
+  if (x.lo() == 0.0 && x.hi() == 0.0) return Interval::empty();
+  if (m % 2 == 0) return Interval::from_bounds(recip_pow_down(x.mag(), m), recip_pow_up(x.mig(), m));
+  if (x.lo() < 0.0 && x.hi() > 0.0) return Interval::entire();
+  if (x.lo() >= 0.0) return Interval::from_bounds(recip_pow_down(x.hi(), m), recip_pow_up(x.lo(), m));
+  return Interval::from_bounds(-recip_pow_up(-x.hi(), m), -recip_pow_down(-x.lo(), m));  // x <= 0
+}
+
 }  // namespace
 
 Interval pow(const Interval& x, int n) {
   if (x.is_empty()) return Interval::empty();
   if (n >= 0) return pow_nonnegative_exponent(x, n);
-  // x^-n = 1 / x^n; the division handles the zero cases as IEEE 1788 pown does.
   // n = INT_MIN has no positive counterpart: x^INT_MIN = (x^(INT_MIN/2))^2.
   if (n == std::numeric_limits<int>::min()) return sqr(pow(x, n / 2));
-  const Interval via_power = Interval(1.0) / pow_nonnegative_exponent(x, -n);
-  if (x.contains(0.0)) return via_power;
-  // Away from 0, (1/x)^|n| is a second enclosure; it stays tight where x^|n|
-  // overflows (x = 1e300, n = -2 gives about 1e-600, not 1/DBL_MAX).
-  return intersect(via_power, pow_nonnegative_exponent(recip(x), -n));
+  return pow_negative_exponent(x, -n);
 }
 
 Interval exp(const Interval& x) {
