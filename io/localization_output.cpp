@@ -70,7 +70,8 @@ std::string localization_summary(const LocalizationProblem& p, const Localizatio
       s += format("number of outliers between %d and %d (epsilon_min reached: outer enclosure only)\n", g.q_lower, g.q_star);
     if (g.q_used != g.q_star && g.found) s += format("paving characterises S_%d (extra margin of %d outliers)\n", g.q_used, p.extra_outliers);
   } else {
-    s += format("policy: fixed, up to %d outliers allowed; epsilon %g\n", p.outliers, p.epsilon);
+    s += format("policy: fixed, up to %d outliers allowed; epsilon %g; %zu boxes examined\n", p.outliers, p.epsilon,
+                r.paving.report.boxes_visited);
   }
   const SiviaReport& rep = r.paving.report;
   s += format("paving: %zu inner boxes (volume %.6g), %zu boundary boxes (volume %.6g); %.3f s in all\n",
