@@ -108,29 +108,31 @@ Interval periodic_hull(const Interval& x, const PeriodicPiece (&pieces)[N], cons
   // Far from 0 the multiples of the period are too coarse to contract anything.
   constexpr double kFar = 0x1p40;
   if (x.lo() < -kFar || x.hi() > kFar) return x;
-  const auto computed_piece = [&](double k, const PeriodicPiece& p) {
+  double lo = kInf, hi = -kInf;
+  const auto visit = [&](double k) {  // the pieces of index k that meet x
     const Interval shift = Interval(k) * period;
-    return Interval((p.alpha + shift).lo(), (p.beta + shift).hi());
-  };
-  // Scan the pieces whose index is near the end point: one period before and two
-  // after cover the whole window [end - period, end + period].
-  const auto scan = [&](double end, bool lower) {
-    double best = lower ? kInf : -kInf;
-    const double k0 = std::floor(end / period.mid());
-    for (double k = k0 - 2; k <= k0 + 2; ++k) {
-      for (const PeriodicPiece& p : pieces) {
-        const Interval piece = intersect(computed_piece(k, p), x);
-        if (piece.is_empty()) continue;
-        best = lower ? std::min(best, piece.lo()) : std::max(best, piece.hi());
-      }
+    for (const PeriodicPiece& p : pieces) {
+      const Interval piece = intersect(Interval((p.alpha + shift).lo(), (p.beta + shift).hi()), x);
+      if (piece.is_empty()) continue;
+      lo = std::min(lo, piece.lo());
+      hi = std::max(hi, piece.hi());
     }
-    return best;
   };
-  const double lo = scan(x.lo(), true);
-  const double hi = scan(x.hi(), false);
-  // Both scans together cover x when it is shorter than a period, and a wider x
-  // always meets the (non-empty, periodic) solution set: nothing found means empty.
-  if (lo == kInf || hi == -kInf) return Interval::empty();
+  // Every piece of index k lies in [(k - 1/2) period, (k + 3/4) period] (asin is
+  // in [-pi/2, pi/2], acos in [0, pi], atan in [-pi/2, pi/2]), so the indices from
+  // floor(lo / period) - 1 to floor(hi / period) + 1 cover x; the quotients are
+  // bounded outward, so a floor is at most one off, towards the outside. A wide x
+  // is scanned near its two ends only: there are solutions in every period, so
+  // its extreme solutions lie within a period of its ends.
+  const double k_lo = std::floor((Interval(x.lo()) / period).lo());
+  const double k_hi = std::floor((Interval(x.hi()) / period).hi());
+  if (k_hi - k_lo <= 4) {
+    for (double k = k_lo - 1; k <= k_hi + 1; ++k) visit(k);
+  } else {
+    for (double k = k_lo - 1; k <= k_lo + 2; ++k) visit(k);
+    for (double k = k_hi - 2; k <= k_hi + 1; ++k) visit(k);
+  }
+  if (lo == kInf) return Interval::empty();  // a wide x always meets the solutions
   return Interval(lo, hi);
 }
 
