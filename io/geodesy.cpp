@@ -29,6 +29,17 @@ GeoOrigin LocalFrame::to_geodetic(double north, double east) const {
   return {lat, lon};
 }
 
+void set_geodetic_gps(Mission& m) {
+  const LocalFrame frame(m.origin);
+  m.gps_latitude.resize(m.gps_north.size());
+  m.gps_longitude.resize(m.gps_north.size());
+  for (std::size_t i = 0; i < m.gps_north.size(); ++i) {
+    const GeoOrigin g = frame.to_geodetic(m.gps_north[i], m.gps_east[i]);
+    m.gps_latitude[i] = g.latitude;
+    m.gps_longitude[i] = g.longitude;
+  }
+}
+
 void fill_local_gps(Mission& m, const std::string& source) {
   const LocalFrame frame(m.origin);
   const std::size_t g = m.gps_time.size();

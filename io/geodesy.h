@@ -30,6 +30,10 @@ class LocalFrame {
   GeoOrigin origin_;
 };
 
+/// Sets the fixes' longitude and latitude from gps_north/east (simulated missions,
+/// whose fixes are made in the local frame).
+void set_geodetic_gps(Mission& mission);
+
 /// Fills gps_north/east and their half-widths, and heading_frame_margin, from the
 /// fixes, the origin and the sensor model. Throws FormatError (naming `source` and
 /// the fix) when a fix lies farther than kLocalFrameZone from the origin.

@@ -33,6 +33,19 @@ void assign_allowed_mines(MissionNetwork& net) {
 
 }  // namespace
 
+std::vector<PositionFix> gps_fixes(const Mission& m) {
+  std::vector<PositionFix> fixes;
+  for (std::size_t i = 0; i < m.gps_north.size(); ++i) {
+    PositionFix f;
+    f.time = m.gps_time[i];
+    f.box[0] = Interval::around(m.gps_north[i], m.gps_north_halfwidth[i]);
+    f.box[1] = Interval::around(m.gps_east[i], m.gps_east_halfwidth[i]);
+    f.source_index = i;
+    fixes.push_back(f);
+  }
+  return fixes;
+}
+
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes) {
   const SensorBoxes boxes(mission, model);
   MissionNetwork net;

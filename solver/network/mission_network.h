@@ -25,6 +25,10 @@ struct PositionFix {
   std::size_t source_index = 0;  // row in the mission's GPS table
 };
 
+/// The mission's GPS fixes as local boxes (io/ fills gps_north/east and their
+/// half-widths from the longitudes and latitudes).
+std::vector<PositionFix> gps_fixes(const Mission& mission);
+
 struct Anchor {
   PositionFix fix;
   TimeLocation at;

@@ -1,6 +1,7 @@
 #include "solver/network/sensor_boxes.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace gesmi {
 
@@ -48,9 +49,14 @@ Interval SensorBoxes::widen_over_step(const Interval& a, const Interval& b, doub
 
 Attitude<Interval> SensorBoxes::step_attitude(std::size_t k) const {
   const double rate = model_.max_attitude_rate;
+  // Headings wrap at +-pi: take the representative of the next one closest to this
+  // one (2 pi turns change neither sine nor cosine).
+  Interval next_heading = heading(k + 1);
+  const double turns = std::round((m_.heading[k] - m_.heading[k + 1]) / (2.0 * std::numbers::pi));
+  if (turns != 0.0) next_heading = next_heading + Interval(turns) * Interval::two_pi();
   return make_attitude(widen_over_step(roll(k), roll(k + 1), rate, k),
                        widen_over_step(pitch(k), pitch(k + 1), rate, k),
-                       widen_over_step(heading(k), heading(k + 1), rate, k));
+                       widen_over_step(heading(k), next_heading, rate, k));
 }
 
 Vec3I SensorBoxes::step_velocity(std::size_t k) const {

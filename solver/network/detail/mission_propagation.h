@@ -59,21 +59,38 @@ class MissionPropagation {
     return true;
   }
 
+  // The chain emptied p(k) (forward: coming from k - 1; backward: from k + 1): the
+  // constraints on either side of that step cannot be joined by dead reckoning.
+  // Name the nearest fix or detection on each side: they, or the navigation bounds
+  // between them, are what to check.
   Inconsistency evolution_failure(int axis, std::size_t k, bool forward) {
-    // The chain emptied p(k) (forward: coming from k - 1; backward: from k + 1).
     Inconsistency inc;
     inc.kind = Inconsistency::Kind::evolution;
     inc.step = k;
     inc.time = net_.time[k];
-    const std::size_t from = forward ? k - 1 : k + 1;
-    std::string what = "the " + std::string(kAxisNames[axis]) + " position at t = " + format_time(inc.time) +
-                       " cannot be reached by dead reckoning from t = " + format_time(net_.time[from]);
+    const std::size_t boundary = forward ? k : k + 1;  // constraints at >= boundary are "after"
+    std::string before, after;
+    double before_time = -kInf, after_time = kInf;
+    const auto consider = [&](std::size_t at_k, double t, const std::string& name) {
+      if (at_k < boundary && t > before_time) {
+        before_time = t;
+        before = name;
+      } else if (at_k >= boundary && t < after_time) {
+        after_time = t;
+        after = name;
+      }
+    };
     for (const Anchor& a : net_.anchors)
-      if (a.at.k == k || (!a.at.on_grid && a.at.k + 1 == k))
-        what += "; GPS fix " + std::to_string(a.fix.source_index) + " at t = " + format_time(a.fix.time) + " gives " +
-                std::string(kAxisNames[axis]) + " in " + format_interval(a.fix.box[axis]);
+      consider(a.at.k, a.fix.time, "GPS fix " + std::to_string(a.fix.source_index) + " at t = " + format_time(a.fix.time));
+    for (const Detection& d : net_.detections)
+      consider(d.at.k, d.time, detection_head(d, d.mine >= 0 ? std::to_string(d.mine) : "?"));
+    std::string what = "dead reckoning cannot join the " + std::string(kAxisNames[axis]) + " positions allowed before and after t = " +
+                       format_time(inc.time);
+    if (!before.empty() || !after.empty())
+      what += ": between " + (before.empty() ? std::string("the start") : before) + " and " +
+              (after.empty() ? std::string("the end") : after);
     if (axis == 2) what += "; the barometer bounds the depth there";
-    what += " (check the DVL, gyrocompass and depth bounds, or an outlier fix)";
+    what += " (one of them, or the DVL/gyrocompass bounds, is wrong)";
     inc.message = what;
     return inc;
   }

@@ -102,6 +102,7 @@ TEST(MissionSolver, ReportsAnUnreachableGpsFix) {
   ASSERT_FALSE(s.report.consistent());
   EXPECT_EQ(s.report.inconsistency->kind, Inconsistency::Kind::evolution);
   EXPECT_NE(s.report.inconsistency->message.find("GPS fix 1"), std::string::npos) << s.report.inconsistency->message;
+  EXPECT_NE(s.report.inconsistency->message.find("GPS fix 0"), std::string::npos) << s.report.inconsistency->message;
 }
 
 TEST(MissionSolver, ValidatesItsOptions) {

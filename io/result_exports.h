@@ -1,0 +1,18 @@
+#pragma once
+// Exports of a result for other tools: the mine boxes as CSV, and GeoJSON for GIS
+// (mine boxes and the envelope as polygons in WGS84 longitude/latitude).
+
+#include <string>
+
+#include "solver/mission/mission.h"
+#include "solver/network/tube_domains.h"
+
+namespace gesmi::io {
+
+void write_mines_csv(const TubeDomains& domains, const std::string& path);
+/// The envelope is written as one polygon per stretch of `stride` samples (the
+/// hull of their boxes), so a 60,000-step tube stays a few hundred polygons.
+void write_geojson(const TubeDomains& domains, const GeoOrigin& origin, const std::string& path,
+                   std::size_t polygons = 600);
+
+}  // namespace gesmi::io

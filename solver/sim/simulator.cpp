@@ -1,0 +1,261 @@
+#include "solver/sim/simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "solver/model/euler.h"
+#include "solver/sim/random_source.h"
+#include "solver/sim/survey_plan.h"
+
+namespace gesmi {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr double kMaxTurnRate = 0.045;   // rad/s: below the model's 0.05
+constexpr double kMaxPitchRate = 0.004;  // rad/s
+constexpr double kMaxSpeedRate = 0.1;    // m/s^2: below the model's 0.2
+constexpr int kSubSteps = 2;             // midpoint rule per half step
+
+double wrap(double angle) { return std::remainder(angle, kTwoPi); }
+
+// Smooth components of the true motion that the guidance does not steer.
+double true_roll(double t) { return 0.02 * std::sin(kTwoPi * t / 23.0); }
+double true_sway(double t) { return 0.04 * std::sin(kTwoPi * t / 37.0); }
+double true_heave(double t) { return 0.02 * std::sin(kTwoPi * t / 53.0); }
+
+// Reading errors strictly inside their bounds: uniform, or a bias at 99 % of the
+// bound with a sign fixed per sensor (worst case).
+class Errors {
+ public:
+  enum Sensor { roll, pitch, heading, vx, vy, vz, depth, altitude, gps_north, gps_east, mark, count };
+  Errors(RandomSource& rng, SimulatedErrors mode) : rng_(rng), mode_(mode) {
+    for (double& s : signs_) s = rng_.sign();
+  }
+  double operator()(Sensor sensor, double bound) {
+    if (mode_ == SimulatedErrors::worst_case) return 0.99 * bound * signs_[sensor];
+    return 0.99 * bound * rng_.uniform(-1.0, 1.0);
+  }
+
+ private:
+  RandomSource& rng_;
+  SimulatedErrors mode_;
+  double signs_[count];
+};
+
+struct TruthState {
+  Vec3d p{0.0, 0.0, 6.0};
+  double heading = 0.0, pitch = 0.0, speed = 1.5;
+};
+
+// Survey waypoints, repeated back and forth until the path is long enough.
+std::vector<Waypoint> plan_for(double duration, double& path_length) {
+  const std::vector<Waypoint> pass = reference_survey();
+  std::vector<Waypoint> plan;
+  path_length = 0.0;
+  Vec2d at(0.0, 0.0);
+  bool forward = true;
+  const double needed = duration * 1.45;
+  do {
+    std::vector<Waypoint> leg = pass;
+    if (!forward) std::reverse(leg.begin(), leg.end());
+    for (const Waypoint& w : leg) {
+      path_length += std::hypot(w.north - at[0], w.east - at[1]);
+      at = Vec2d(w.north, w.east);
+      plan.push_back(w);
+      if (path_length > needed && plan.size() > pass.size()) break;
+    }
+    forward = !forward;
+  } while (path_length < needed * 0.8);
+  return plan;
+}
+
+// Flies the plan: heading-rate- and acceleration-limited guidance, the rates held
+// constant over each step (so the truth is piecewise linear within the bounds), and
+// the displacement integrated with a midpoint rule on sub-steps.
+class Pilot {
+ public:
+  Pilot(const std::vector<Waypoint>& plan, double mean_speed) : plan_(plan), mean_speed_(mean_speed) {}
+  bool arrived() const { return target_ >= plan_.size(); }
+
+  void step(TruthState& s, double t, double dt) {
+    // Next waypoint when close, or once past the line through it across the leg (a
+    // waypoint inside the turning circle would otherwise be circled for ever).
+    if (target_ < plan_.size()) {
+      const Waypoint& w = plan_[target_];
+      const Vec2d from = target_ > 0 ? Vec2d(plan_[target_ - 1].north, plan_[target_ - 1].east) : Vec2d(0.0, 0.0);
+      const Vec2d to(w.north, w.east), here(s.p[0], s.p[1]);
+      if ((to - here).norm() < 20.0 || (here - to).dot(to - from) > 0.0) ++target_;
+    }
+    const Waypoint& w = plan_[std::min(target_, plan_.size() - 1)];
+    const double wanted = std::atan2(w.east - s.p[1], w.north - s.p[0]);
+    const double turn = arrived() ? kMaxTurnRate : std::clamp(0.6 * wrap(wanted - s.heading), -kMaxTurnRate, kMaxTurnRate);
+    const double pitch_goal = std::clamp(0.02 * (s.p[2] - w.depth), -0.04, 0.04);
+    const double pitch_rate = std::clamp((pitch_goal - s.pitch) / dt, -kMaxPitchRate, kMaxPitchRate);
+    const double speed_goal = mean_speed_ * (1.0 + 0.15 * std::sin(kTwoPi * (t + dt) / 900.0));
+    const double speed_rate = std::clamp((speed_goal - s.speed) / dt, -kMaxSpeedRate, kMaxSpeedRate);
+    for (int sub = 0; sub < kSubSteps; ++sub) {
+      const double f = (sub + 0.5) / kSubSteps;  // midpoint of the sub-step
+      const double tm = t + f * dt;
+      const Attitude<double> a = make_attitude(true_roll(tm), s.pitch + pitch_rate * f * dt, s.heading + turn * f * dt);
+      const Vec3d v(s.speed + speed_rate * f * dt, true_sway(tm), true_heave(tm));
+      s.p += (dt / kSubSteps) * body_to_world(a, v);
+    }
+    s.heading += turn * dt;
+    s.pitch += pitch_rate * dt;
+    s.speed += speed_rate * dt;
+  }
+
+ private:
+  const std::vector<Waypoint>& plan_;
+  double mean_speed_;
+  std::size_t target_ = 0;
+};
+
+TruthState start_state(const std::vector<Waypoint>& plan, double speed) {
+  TruthState s;
+  s.speed = speed;
+  s.heading = std::atan2(plan[0].east, plan[0].north);
+  return s;
+}
+
+// The mean speed that makes the robot reach the last waypoint just before the end:
+// one trial flight, then scaled by the time it took.
+double calibrated_speed(const std::vector<Waypoint>& plan, double path_length, double duration, double dt) {
+  const double guess = std::clamp(path_length / duration, 1.2, 2.2);
+  Pilot pilot(plan, guess);
+  TruthState s = start_state(plan, guess);
+  double t = 0.0;
+  while (!pilot.arrived() && t < 3.0 * duration) {
+    pilot.step(s, t, dt);
+    t += dt;
+  }
+  return std::clamp(guess * t / std::max(duration - 60.0, 0.5 * duration), 1.2, 2.2);
+}
+
+}  // namespace
+
+std::string SimulationOptions::validate() const {
+  if (!(duration > 0.0) || !std::isfinite(duration)) return "duration must be a positive number of seconds";
+  if (!(rate > 0.0) || !std::isfinite(rate) || rate > 1000.0) return "rate must be in (0, 1000] Hz";
+  if (duration * rate > 2e8) return "duration x rate exceeds 2e8 samples";
+  if (mines < 0 || mines > 64) return "mines must be between 0 and 64";
+  if (!(missed >= 0.0 && missed <= 1.0)) return "missed must be a probability in [0, 1]";
+  if (!(unassociated >= 0.0 && unassociated <= 1.0)) return "unassociated must be a probability in [0, 1]";
+  if (outliers < 0) return "outliers must be >= 0";
+  return {};
+}
+
+Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
+  RandomSource rng(o.seed);
+  Errors error(rng, o.errors);
+  Mission m;
+  m.model = model;
+  m.mine_count = o.mines;
+  const std::size_t n = static_cast<std::size_t>(std::floor(o.duration * o.rate + 1e-9)) + 1;
+  const double dt = 1.0 / o.rate;
+  double path_length = 0.0;
+  const std::vector<Waypoint> plan = plan_for(o.duration, path_length);
+  const double mean_speed = calibrated_speed(plan, path_length, o.duration, dt);
+  const std::vector<Vec3d> mines = reference_mines(o.mines, sea_floor_depth);
+  for (const Vec3d& mine : mines) m.truth_mines.insert(m.truth_mines.end(), {mine[0], mine[1], mine[2]});
+
+  for (std::vector<double>* v : {&m.time, &m.roll, &m.pitch, &m.heading, &m.vx, &m.vy, &m.vz, &m.altitude, &m.depth,
+                                 &m.truth_x, &m.truth_y, &m.truth_z})
+    v->resize(n);
+
+  TruthState s = start_state(plan, mean_speed);
+  Pilot pilot(plan, mean_speed);
+  // Per mine: the robot-frame offset at the previous sample, for plane crossings.
+  std::vector<Vec3d> previous_offset(mines.size());
+  std::vector<char> previous_valid(mines.size(), 0);
+  struct Crossing {
+    double time;
+    int mine;
+    double range;
+  };
+  std::vector<Crossing> crossings;
+
+  for (std::size_t k = 0; k < n; ++k) {
+    const double t = static_cast<double>(k) * dt;
+    m.time[k] = t;
+    m.truth_x[k] = s.p[0];
+    m.truth_y[k] = s.p[1];
+    m.truth_z[k] = s.p[2];
+    const double roll = true_roll(t);
+    const Vec3d v_body(s.speed, true_sway(t), true_heave(t));
+    // Readings.
+    m.roll[k] = roll + error(Errors::roll, model.roll);
+    m.pitch[k] = s.pitch + error(Errors::pitch, model.pitch);
+    m.heading[k] = wrap(s.heading + error(Errors::heading, model.heading));
+    const auto dvl = [&](Errors::Sensor sensor, double v) {
+      // |error| <= (a|v| + b) / (1 + a) keeps v inside reading ± (a|reading| + b).
+      return v + error(sensor, (model.dvl_relative * std::fabs(v) + model.dvl_absolute) / (1.0 + model.dvl_relative));
+    };
+    m.vx[k] = dvl(Errors::vx, v_body[0]);
+    m.vy[k] = dvl(Errors::vy, v_body[1]);
+    m.vz[k] = dvl(Errors::vz, v_body[2]);
+    m.depth[k] = s.p[2] + error(Errors::depth, (model.depth_absolute + model.depth_relative * std::fabs(s.p[2])) /
+                                                   (1.0 + model.depth_relative));
+    m.altitude[k] = sea_floor_depth(s.p[0], s.p[1]) - s.p[2] + error(Errors::altitude, model.altitude);
+
+    // Sonar plane crossings (starboard, below, within range).
+    const Attitude<double> att = make_attitude(roll, s.pitch, s.heading);
+    for (std::size_t i = 0; i < mines.size(); ++i) {
+      const Vec3d e = s.p - mines[i];
+      if (std::hypot(e[0], e[1]) > model.sonar_max_range + 20.0) {
+        previous_valid[i] = 0;
+        continue;
+      }
+      const Vec3d eb = world_to_body(att, e);
+      if (previous_valid[i] && (eb[0] <= 0.0) != (previous_offset[i][0] <= 0.0)) {
+        const bool now_closer = std::fabs(eb[0]) <= std::fabs(previous_offset[i][0]);
+        const Vec3d at = now_closer ? eb : previous_offset[i];
+        const std::size_t kc = now_closer ? k : k - 1;
+        const double range = at.norm();
+        if (at[1] < 0.0 && at[2] < 0.0 && range < model.sonar_max_range - 2.0 &&
+            std::fabs(at[0]) < 0.9 * model.along_track_tolerance)
+          crossings.push_back({m.time[kc], static_cast<int>(i), range});
+      }
+      previous_offset[i] = eb;
+      previous_valid[i] = 1;
+    }
+    if (k + 1 == n) break;
+
+    pilot.step(s, t, dt);
+  }
+
+  // Marks: missed ones go to the truth, outliers are corrupted, some lose their number.
+  std::vector<std::size_t> kept;
+  for (const Crossing& c : crossings) {
+    if (rng.chance(o.missed)) {
+      m.truth_missed_marks.insert(m.truth_missed_marks.end(), {c.time, static_cast<double>(c.mine), c.range});
+      continue;
+    }
+    m.mark_time.push_back(c.time);
+    m.mark_mine.push_back(rng.chance(o.unassociated) ? -1 : c.mine);
+    m.mark_range.push_back(c.range + error(Errors::mark, model.mark_range));
+    m.mark_side.push_back(1);
+    m.truth_marks_outlier.push_back(0);
+  }
+  for (int q = 0; q < o.outliers && q < static_cast<int>(m.mark_count()); ++q) {
+    std::size_t j;
+    do j = static_cast<std::size_t>(rng.uniform() * static_cast<double>(m.mark_count()));
+    while (m.truth_marks_outlier[j]);
+    m.truth_marks_outlier[j] = 1;
+    const double shift = rng.uniform(20.0, 35.0);  // far beyond the ±1 m bound
+    m.mark_range[j] = m.mark_range[j] + shift <= model.sonar_max_range ? m.mark_range[j] + shift : m.mark_range[j] - shift;
+    m.mark_range[j] = std::max(m.mark_range[j], 0.0);
+  }
+
+  // GPS at the start and the end, in the local frame.
+  for (const std::size_t k : {std::size_t{0}, n - 1}) {
+    m.gps_time.push_back(m.time[k]);
+    m.gps_north.push_back(m.truth_x[k] + error(Errors::gps_north, model.gps_metres));
+    m.gps_east.push_back(m.truth_y[k] + error(Errors::gps_east, model.gps_metres));
+    m.truth_gps_outlier.push_back(0);
+  }
+  return m;
+}
+
+}  // namespace gesmi
