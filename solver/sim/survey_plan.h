@@ -16,7 +16,7 @@ struct Waypoint {
 };
 
 /// Local frame position of the reference end fix relative to the start fix
-/// (computed from the two published fixes with GeographicLib; docs/formats.md).
+/// (computed from the two published fixes by io/geodesy; docs/formats.md).
 inline constexpr double kReferenceEndNorth = 690.43;
 inline constexpr double kReferenceEndEast = 265.07;
 
