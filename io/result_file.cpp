@@ -67,6 +67,9 @@ void write_result(const SolveResult& r, const std::string& path) {
       for (std::size_t i = 0; i < k; ++i) candidates[j * k + i] = static_cast<std::int32_t>(r.candidates[j] >> i & 1);
     f.write("/marks/candidates", candidates, r.candidates.size(), k, 2);
     f.write("/marks/outlier", r.outlier, r.outlier.size());
+    f.write("/marks/time", r.mark_time, r.mark_time.size());
+    f.write("/marks/range", r.mark_range, r.mark_range.size());
+    f.write("/marks/mine", r.mark_mine, r.mark_mine.size());
     f.write("/gps/outlier", r.gps_outlier, r.gps_outlier.size());
     f.set_attribute("/", "format", std::string(kFormat));
     f.set_attribute("/", "status", std::string(r.consistent ? "consistent" : "inconsistent"));
@@ -113,6 +116,8 @@ SolveResult read_result(const std::string& path, bool with_waterfall) {
   r.marks_hash = text("marks_hash");
   r.mark_count = integer("mark_count");
   r.version = text("gesmi_version");
+  for (const char* name : {"load", "build", "propagate", "waterfall", "write"})
+    if (const auto ms = f.double_attribute("/", std::string("timing_") + name + "_ms")) r.timings_ms[name] = *ms;
   r.time = f.read_doubles("/time");
   const std::size_t n = r.time.size();
   if (n < 2) throw FormatError(path + ": /time: expected at least 2 samples");
@@ -135,6 +140,12 @@ SolveResult read_result(const std::string& path, bool with_waterfall) {
     for (std::size_t i = 0; i < k; ++i)
       if (candidates[j * k + i]) r.candidates[j] |= std::uint64_t{1} << i;
   r.outlier = f.read_ints("/marks/outlier");
+  r.mark_time = f.read_doubles("/marks/time");
+  r.mark_range = f.read_doubles("/marks/range");
+  r.mark_mine = f.read_ints("/marks/mine");
+  const auto marks = static_cast<std::size_t>(r.mark_count);
+  if (r.outlier.size() != marks || r.mark_time.size() != marks || r.mark_range.size() != marks || r.mark_mine.size() != marks)
+    throw FormatError(path + ": /marks: expected " + std::to_string(marks) + " rows in every dataset");
   r.gps_outlier = f.read_ints("/gps/outlier");
   if (with_waterfall) {
     const H5Shape ws = f.shape("/waterfall/lower");

@@ -18,6 +18,8 @@ struct SolveResult {
   std::vector<double> time;
   TubeDomains domains;                    // tube, increments, mines
   Waterfall waterfall;
+  std::vector<double> mark_time, mark_range;  // the mark table the result was computed with
+  std::vector<std::int32_t> mark_mine;
   std::vector<std::uint64_t> candidates;  // per mark row: candidate mines (bit i: mine i)
   std::vector<std::int32_t> outlier;      // per mark row: 1 when every outlier hypothesis removes it
   std::vector<std::int32_t> gps_outlier;  // per GPS fix

@@ -6,13 +6,19 @@ namespace gesmi {
 
 std::vector<LookAgainWindow> look_again_windows(const Waterfall& w, std::span<const double> time,
                                                 const MissionNetwork& network, const TubeDomains& domains) {
+  std::vector<double> mark_time;
+  for (const Detection& det : network.detections) mark_time.push_back(det.time);
+  return look_again_windows(w, time, mark_time, domains.candidates);
+}
+
+std::vector<LookAgainWindow> look_again_windows(const Waterfall& w, std::span<const double> time,
+                                                std::span<const double> mark_time,
+                                                std::span<const std::uint64_t> mark_candidates) {
   std::vector<LookAgainWindow> windows;
   for (std::size_t i = 0; i < w.mines; ++i) {
     const auto explained = [&](double t0, double t1) {
-      for (std::size_t j = 0; j < network.detections.size(); ++j) {
-        const Detection& det = network.detections[j];
-        if ((domains.candidates[j] >> i & 1) && det.time >= t0 && det.time <= t1) return true;
-      }
+      for (std::size_t j = 0; j < mark_time.size(); ++j)
+        if ((mark_candidates[j] >> i & 1) && mark_time[j] >= t0 && mark_time[j] <= t1) return true;
       return false;
     };
     std::size_t k = 0;
@@ -26,8 +32,14 @@ std::vector<LookAgainWindow> look_again_windows(const Waterfall& w, std::span<co
       win.k_start = k;
       win.range_lo = w.lo(k, i);
       win.range_hi = w.hi(k, i);
-      while (k + 1 < w.steps && w.feasible(k + 1, i)) {
-        ++k;
+      // Extend over feasible steps, bridging gaps shorter than kMaxGap seconds (one
+      // look at the record covers them).
+      constexpr double kMaxGap = 1.0;
+      while (true) {
+        std::size_t next = k + 1;
+        while (next < w.steps && !w.feasible(next, i) && time[next] - time[k] <= kMaxGap) ++next;
+        if (next >= w.steps || !w.feasible(next, i)) break;
+        k = next;
         win.range_lo = std::min(win.range_lo, w.lo(k, i));
         win.range_hi = std::max(win.range_hi, w.hi(k, i));
       }

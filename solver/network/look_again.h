@@ -4,6 +4,7 @@
 // waterfall is not empty) but no detection that may be this mine was recorded,
 // with the interval of slant ranges, narrowest windows first.
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -23,5 +24,9 @@ struct LookAgainWindow {
 /// sorted by duration (narrowest first), then by mine and start time.
 std::vector<LookAgainWindow> look_again_windows(const Waterfall& waterfall, std::span<const double> time,
                                                 const MissionNetwork& network, const TubeDomains& domains);
+/// Same from the mark table: mark times and their candidate mines (bit i: mine i).
+std::vector<LookAgainWindow> look_again_windows(const Waterfall& waterfall, std::span<const double> time,
+                                                std::span<const double> mark_time,
+                                                std::span<const std::uint64_t> mark_candidates);
 
 }  // namespace gesmi

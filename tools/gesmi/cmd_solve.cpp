@@ -251,6 +251,9 @@ int run_solve(std::span<const std::string> args) {
   for (std::size_t j = 0; j < run.network.detections.size(); ++j)
     result.candidates[run.network.detections[j].mark] = result.domains.candidates[j];
   result.outlier = run.outlier;
+  result.mark_time = run.mission.mark_time;
+  result.mark_range = run.mission.mark_range;
+  result.mark_mine = run.mission.mark_mine;
   result.gps_outlier = run.gps_outlier;
   result.consistent = run.report.consistent();
   result.message = result.consistent ? "" : run.report.inconsistency->message;
