@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -38,7 +39,7 @@ std::string write_file(const std::string& name, const std::string& text) {
 
 TEST(IntervalItf1788, EveryVectorPassesWithZeroFailures) {
   const std::vector<std::string> files = itl_files();
-  ASSERT_EQ(files.size(), 11u);
+  ASSERT_GE(files.size(), 11u);  // the 11 files of tests/data/itf1788
   const test::CommandResult r = test::run_program("itl-check", files);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_EQ(r.out.find("FAILED"), std::string::npos) << r.out;
