@@ -121,6 +121,7 @@ void validate_mission(const Mission& m, const std::string& source) {
   }
   if (!m.truth_mines.empty()) expect_size(m.truth_mines.size(), 3 * static_cast<std::size_t>(m.mine_count), source, "/truth/mines (K x 3)");
   if (!m.truth_marks_outlier.empty()) expect_size(m.truth_marks_outlier.size(), mk, source, "/truth/marks_outlier");
+  if (!m.truth_marks_mine.empty()) expect_size(m.truth_marks_mine.size(), mk, source, "/truth/marks_mine");
   if (!m.truth_gps_outlier.empty()) expect_size(m.truth_gps_outlier.size(), g, source, "/truth/gps_outlier");
 }
 
@@ -191,6 +192,7 @@ Mission read_mission(const std::string& path) {
   if (f.has("/truth/mines")) m.truth_mines = f.read_doubles("/truth/mines");
   if (f.has("/truth/missed_marks")) m.truth_missed_marks = f.read_doubles("/truth/missed_marks");
   if (f.has("/truth/marks_outlier")) m.truth_marks_outlier = f.read_ints("/truth/marks_outlier");
+  if (f.has("/truth/marks_mine")) m.truth_marks_mine = f.read_ints("/truth/marks_mine");
   if (f.has("/truth/gps_outlier")) m.truth_gps_outlier = f.read_ints("/truth/gps_outlier");
   validate_mission(m, path);
   fill_local_gps(m, path);
@@ -239,6 +241,7 @@ void write_mission(const Mission& m, const std::string& path) {
     if (!m.truth_missed_marks.empty())
       f.write("/truth/missed_marks", m.truth_missed_marks, m.truth_missed_marks.size() / 3, 3, 2);
     if (!m.truth_marks_outlier.empty()) f.write("/truth/marks_outlier", m.truth_marks_outlier, mk);
+    if (!m.truth_marks_mine.empty()) f.write("/truth/marks_mine", m.truth_marks_mine, mk);
     if (!m.truth_gps_outlier.empty()) f.write("/truth/gps_outlier", m.truth_gps_outlier, g);
     f.set_attribute("/", "format", std::string(kFormat));
     f.set_attribute("/", "format_version", kFormatVersion);

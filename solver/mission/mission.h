@@ -67,6 +67,7 @@ struct Mission {
   std::vector<double> truth_mines;                // K×3 row-major, local NED, m
   std::vector<double> truth_missed_marks;         // X×3 row-major: time, mine, range of dropped detections
   std::vector<std::int32_t> truth_marks_outlier;  // M: 1 for a corrupted mark
+  std::vector<std::int32_t> truth_marks_mine;     // M: the mine each mark really is
   std::vector<std::int32_t> truth_gps_outlier;    // G: 1 for a corrupted fix
 
   std::size_t size() const { return time.size(); }

@@ -237,6 +237,7 @@ Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
     m.mark_range.push_back(c.range + error(Errors::mark, model.mark_range));
     m.mark_side.push_back(1);
     m.truth_marks_outlier.push_back(0);
+    m.truth_marks_mine.push_back(c.mine);
   }
   for (int q = 0; q < o.outliers && q < static_cast<int>(m.mark_count()); ++q) {
     std::size_t j;

@@ -72,8 +72,10 @@ std::vector<std::uint64_t> check_warm_start(const io::SolveResult& previous, con
   return previous.candidates;
 }
 
-void solve_warm(Run& run, const std::string& from, const SolverOptions& options) {
-  const io::SolveResult previous = io::read_result(from, false);
+// Returns false (and leaves the domains for a cold solve) when the added marks
+// change the symmetry breaking among unlabelled mines.
+bool prepare_warm(Run& run, const io::SolveResult& previous, const std::string& from,
+                  std::vector<std::size_t>& added) {
   const std::vector<std::uint64_t> by_mark = check_warm_start(previous, run.mission, from);
   // Symmetry breaking among unlabelled mines depends on the labelled ones: if the
   // added marks change it, the earlier domains assumed other labels: solve cold.
@@ -86,17 +88,13 @@ void solve_warm(Run& run, const std::string& from, const SolverOptions& options)
       if (det.mark == old_det.mark && det.allowed != old_det.allowed) {
         std::fprintf(stderr, "gesmi solve: the added marks name a mine no mark named before; solving cold\n");
         run.domains = initial_domains(run.mission, run.mission.model, run.network);
-        run.report = solve(run.network, run.domains, options);
-        return;
+        return false;
       }
   run.domains = previous.domains;
   add_network_priors(run.domains, run.network);  // mines and candidates reset...
   run.domains.mines = previous.domains.mines;    // ...then the earlier mine boxes restored
-  const std::vector<std::size_t> added = carry_candidates(run.network, run.domains, by_mark);
-  const IncrementalReport r = propagate_from(run.network, run.domains, added, options);
-  run.report = r.solver;
-  run.work_items = r.work_items;
-  run.mode = "warm";
+  added = carry_candidates(run.network, run.domains, by_mark);
+  return true;
 }
 
 void solve_with_outlier_search(Run& run, int max_outliers, const SolverOptions& options) {
@@ -152,14 +150,15 @@ std::string diagnose(const Run& run, const SolverOptions& options) {
   return "; removing " + names + " restores consistency";
 }
 
-void print_candidates(const Run& run) {
-  for (std::size_t j = 0; j < run.network.detections.size(); ++j) {
-    const Detection& det = run.network.detections[j];
+// For each mark without a mine number, the mines still possible.
+void print_candidates(const MissionNetwork& network, const std::vector<std::uint64_t>& candidates_by_mark) {
+  for (const Detection& det : network.detections) {
     if (det.mine >= 0) continue;
+    const std::uint64_t candidates = candidates_by_mark[det.mark];
     std::string mines;
-    for (int i = 0; i < run.network.mine_count; ++i)
-      if (run.domains.candidates[j] >> i & 1) mines += (mines.empty() ? "" : ", ") + std::to_string(i);
-    const int count = std::popcount(run.domains.candidates[j]);
+    for (int i = 0; i < network.mine_count; ++i)
+      if (candidates >> i & 1) mines += (mines.empty() ? "" : ", ") + std::to_string(i);
+    const int count = std::popcount(candidates);
     std::printf("mark %zu at t = %.1f s: %s %s\n", det.mark, det.time,
                 count == 1 ? "mine" : (count == 0 ? "no mine" : "mines"), mines.c_str());
   }
@@ -226,7 +225,21 @@ int run_solve(std::span<const std::string> args) {
                     "sweep " + std::to_string(sweep) + ", largest move " + std::to_string(move) + " m");
   };
   if (v.count("from")) {
-    solve_warm(run, v["from"].as<std::string>(), solver_options);
+    const std::string from = v["from"].as<std::string>();
+    const auto load_start = Clock::now();
+    const io::SolveResult previous = io::read_result(from, false);
+    std::vector<std::size_t> added;
+    const bool warm = prepare_warm(run, previous, from, added);
+    timings["load"] += elapsed_ms(load_start);
+    start = Clock::now();
+    if (warm) {
+      const IncrementalReport r = propagate_from(run.network, run.domains, added, solver_options);
+      run.report = r.solver;
+      run.work_items = r.work_items;
+      run.mode = "warm";
+    } else {
+      run.report = solve(run.network, run.domains, solver_options);
+    }
   } else if (max_outliers >= 0) {
     solve_with_outlier_search(run, max_outliers, solver_options);
   } else {
@@ -294,7 +307,7 @@ int run_solve(std::span<const std::string> args) {
     }
     std::printf("%s}}\n", json.c_str());
   } else {
-    print_candidates(run);
+    print_candidates(run.network, result.candidates);
     std::printf("%s: %s after %lld sweeps, largest horizontal tube width %.1f m, written to %s\n",
                 run.mode.c_str(), result.consistent ? "consistent" : "INCONSISTENT",
                 static_cast<long long>(result.sweeps), result.domains.max_horizontal_width(), output.c_str());
