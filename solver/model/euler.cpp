@@ -13,12 +13,18 @@ SinCos<Interval> sin_cos(const Interval& angle) {
   if (angle.is_empty()) return {Interval::empty(), Interval::empty()};
   const double r = angle.rad();
   if (!(r <= 0.05)) return {sin(angle), cos(angle)};
+  // For x = m + h, |h| <= r: sin x in sin m + cos(m) [-r, r] + [-r^2/2, r^2/2] (|sin''| <= 1),
+  // so the enclosure of sin m widened by |cos m| r + r^2/2 (rounded up), and the same
+  // for cos with |sin m|.
   const double m = angle.mid();
   const Interval s = libm_point(std::sin(m)), c = libm_point(std::cos(m));
-  const Interval h(-r, r);                         // x - m
-  const Interval remainder = Interval(-0.5, 0.5) * sqr(Interval(r));  // |f''| <= 1
-  const Interval unit(-1.0, 1.0);
-  return {intersect(s + c * h + remainder, unit), intersect(c - s * h + remainder, unit)};
+  const double quadratic = mul_up(0.5, mul_up(r, r));
+  const double sin_spread = add_up(mul_up(c.mag(), r), quadratic);
+  const double cos_spread = add_up(mul_up(s.mag(), r), quadratic);
+  const auto widened = [](const Interval& x, double spread) {
+    return Interval::from_bounds(std::max(-1.0, sub_down(x.lo(), spread)), std::min(1.0, add_up(x.hi(), spread)));
+  };
+  return {widened(s, sin_spread), widened(c, cos_spread)};
 }
 
 }  // namespace gesmi

@@ -91,8 +91,11 @@ TubeDomains sensor_domains(const Mission& mission, const SensorModel& model) {
   d.dy.resize(d.dx.size());
   d.dz.resize(d.dx.size());
   for (std::size_t k = 0; k < n; ++k) d.pz[k] = boxes.depth(k);
+  SensorBoxes::SampleBoxes next = boxes.sample(0);
   for (std::size_t k = 0; k + 1 < n; ++k) {
-    const Vec3I inc = boxes.step_increment(k);
+    const SensorBoxes::SampleBoxes current = next;
+    next = boxes.sample(k + 1);
+    const Vec3I inc = boxes.step_increment(current, next, k);
     d.dx[k] = inc[0];
     d.dy[k] = inc[1];
     d.dz[k] = inc[2];

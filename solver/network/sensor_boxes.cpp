@@ -41,30 +41,49 @@ Interval SensorBoxes::altitude(std::size_t k) const {
 }
 
 Interval SensorBoxes::widen_over_step(const Interval& a, const Interval& b, double rate, std::size_t k) const {
-  const double dt = sub_up(m_.time[k + 1], m_.time[k]);
-  const double excursion = mul_up(rate, mul_up(0.5, dt));
+  return widen(a, b, excursion(rate, k));
+}
+
+double SensorBoxes::excursion(double rate, std::size_t k) const {
+  return mul_up(rate, mul_up(0.5, sub_up(m_.time[k + 1], m_.time[k])));
+}
+
+Interval SensorBoxes::widen(const Interval& a, const Interval& b, double excursion) {
   const Interval both = hull(a, b);
   return Interval(sub_down(both.lo(), excursion), add_up(both.hi(), excursion));
 }
 
-Attitude<Interval> SensorBoxes::step_attitude(std::size_t k) const {
-  const double rate = model_.max_attitude_rate;
-  // Headings wrap at +-pi: take the representative of the next one closest to this
-  // one (2 pi turns change neither sine nor cosine).
-  Interval next_heading = heading(k + 1);
-  const double turns = std::round((m_.heading[k] - m_.heading[k + 1]) / (2.0 * std::numbers::pi));
-  if (turns != 0.0) next_heading = next_heading + Interval(turns) * Interval::two_pi();
-  return make_attitude(widen_over_step(roll(k), roll(k + 1), rate, k),
-                       widen_over_step(pitch(k), pitch(k + 1), rate, k),
-                       widen_over_step(heading(k), next_heading, rate, k));
+SensorBoxes::SampleBoxes SensorBoxes::sample(std::size_t k) const {
+  return {roll(k), pitch(k), heading(k), velocity(k)};
 }
 
-Vec3I SensorBoxes::step_velocity(std::size_t k) const {
-  const Vec3I a = velocity(k), b = velocity(k + 1);
-  const double rate = model_.max_acceleration;
-  return Vec3I(widen_over_step(a[0], b[0], rate, k), widen_over_step(a[1], b[1], rate, k),
-               widen_over_step(a[2], b[2], rate, k));
+Attitude<Interval> SensorBoxes::step_attitude(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const {
+  const double e = excursion(model_.max_attitude_rate, k);
+  // Headings wrap at +-pi: take the representative of the next one closest to this
+  // one (2 pi turns change neither sine nor cosine).
+  Interval next_heading = b.heading;
+  const double turns = std::round((m_.heading[k] - m_.heading[k + 1]) / (2.0 * std::numbers::pi));
+  if (turns != 0.0) next_heading = next_heading + Interval(turns) * Interval::two_pi();
+  return make_attitude(widen(a.roll, b.roll, e), widen(a.pitch, b.pitch, e), widen(a.heading, next_heading, e));
 }
+
+Vec3I SensorBoxes::step_velocity(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const {
+  const double e = excursion(model_.max_acceleration, k);
+  return Vec3I(widen(a.velocity[0], b.velocity[0], e), widen(a.velocity[1], b.velocity[1], e),
+               widen(a.velocity[2], b.velocity[2], e));
+}
+
+Vec3I SensorBoxes::step_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const {
+  // Mean value theorem for integrals: the integral over [t_k, t_k+1] of a function
+  // whose values stay in the (convex) box B is in (t_k+1 - t_k) B.
+  const Interval dt = Interval(m_.time[k + 1]) - Interval(m_.time[k]);
+  const Vec3I w = body_to_world(step_attitude(a, b, k), step_velocity(a, b, k));
+  return Vec3I(dt * w[0], dt * w[1], dt * w[2]);
+}
+
+Attitude<Interval> SensorBoxes::step_attitude(std::size_t k) const { return step_attitude(sample(k), sample(k + 1), k); }
+
+Vec3I SensorBoxes::step_velocity(std::size_t k) const { return step_velocity(sample(k), sample(k + 1), k); }
 
 Interval SensorBoxes::step_altitude(std::size_t k) const {
   // a = floor depth - p_z changes at most at |v| (1 + slope), with the floor slope
@@ -79,12 +98,6 @@ Vec3I SensorBoxes::step_world_velocity(std::size_t k) const {
   return body_to_world(step_attitude(k), step_velocity(k));
 }
 
-Vec3I SensorBoxes::step_increment(std::size_t k) const {
-  // Mean value theorem for integrals: the integral over [t_k, t_k+1] of a function
-  // whose values stay in the (convex) box B is in (t_k+1 - t_k) B.
-  const Interval dt = Interval(m_.time[k + 1]) - Interval(m_.time[k]);
-  const Vec3I w = step_world_velocity(k);
-  return Vec3I(dt * w[0], dt * w[1], dt * w[2]);
-}
+Vec3I SensorBoxes::step_increment(std::size_t k) const { return step_increment(sample(k), sample(k + 1), k); }
 
 }  // namespace gesmi

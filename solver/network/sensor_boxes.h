@@ -34,12 +34,25 @@ class SensorBoxes {
   /// Enclosure of the displacement p(k+1) - p(k) = integral of R v over the step.
   Vec3I step_increment(std::size_t k) const;
 
+  /// The boxes of one sample, so that a sweep over the steps builds each once.
+  struct SampleBoxes {
+    Interval roll, pitch, heading;
+    Vec3I velocity;
+  };
+  SampleBoxes sample(std::size_t k) const;
+  Attitude<Interval> step_attitude(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
+  Vec3I step_velocity(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
+  Vec3I step_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
+
   const SensorModel& model() const { return model_; }
 
  private:
   Interval reading(const std::vector<double>& values, const std::vector<double>& half_widths, std::size_t k,
                    double model_bound) const;
   Interval widen_over_step(const Interval& a, const Interval& b, double rate, std::size_t k) const;
+  /// rate * dt / 2 over step k, rounded up.
+  double excursion(double rate, std::size_t k) const;
+  static Interval widen(const Interval& a, const Interval& b, double excursion);
 
   const Mission& m_;
   SensorModel model_;

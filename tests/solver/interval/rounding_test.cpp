@@ -149,3 +149,26 @@ TEST(Rounding, DirectedPowersBracketAnExactIntegerPower) {
 
 }  // namespace
 }  // namespace gesmi
+
+namespace gesmi {
+namespace {
+
+// The bit-addition fast path of step_up/step_down agrees with repeated next_up.
+TEST(Rounding, SteppingSeveralUlpsEqualsRepeatedSingleSteps) {
+  const double samples[] = {1.0, -1.0, 0x1p-999, -0x1p-999, 3.7e-300, -2.5e299, 0x1p52, 1.0 - 0x1p-53, -(1.0 - 0x1p-53),
+                            0.1, -0.3, 0x1p-1022, 5e-324, 0.0, -0.0, 1.7e308, -1.7e308};
+  for (const double x : samples) {
+    for (int steps = 0; steps <= 8; ++steps) {
+      double up = x, down = x;
+      for (int i = 0; i < steps; ++i) {
+        up = next_up(up);
+        down = next_down(down);
+      }
+      EXPECT_EQ(step_up(x, steps), up) << x << " " << steps;
+      EXPECT_EQ(step_down(x, steps), down) << x << " " << steps;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace gesmi

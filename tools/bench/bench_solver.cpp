@@ -1,0 +1,150 @@
+// The mission solver on simulated reference-like missions: cold propagation to the
+// fixpoint (60,000 steps, 6 mines), its scaling with mission length, the sensor
+// enclosures (build), the warm rerun after one added detection, the association of
+// marks without numbers and the outlier-tolerant solve.
+// Targets (issues): cold <= 20 ms; 10^7 steps <= 5 s; warm <= 2 ms; association of
+// 12 marks <= 1 s; Q = 2 outlier solve <= 10 x cold.
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+
+#include "solver/network/incremental_solver.h"
+#include "solver/network/outlier_solver.h"
+#include "solver/sim/simulator.h"
+
+namespace {
+
+using namespace gesmi;
+
+std::vector<PositionFix> local_fixes(const Mission& m) {
+  std::vector<PositionFix> fixes;
+  for (std::size_t i = 0; i < m.gps_time.size(); ++i) {
+    PositionFix f;
+    f.time = m.gps_time[i];
+    f.box[0] = Interval::around(m.gps_north[i], m.model.gps_metres + 0.01);
+    f.box[1] = Interval::around(m.gps_east[i], m.model.gps_metres + 0.01);
+    f.source_index = i;
+    fixes.push_back(f);
+  }
+  return fixes;
+}
+
+// A simulated mission with its network and sensor domains, built once per setup.
+struct Problem {
+  Mission mission;
+  MissionNetwork network;
+  TubeDomains sensor;
+  explicit Problem(const SimulationOptions& o) : mission(simulate_mission(o)) {
+    network = build_network(mission, mission.model, local_fixes(mission));
+    sensor = sensor_domains(mission, mission.model);
+  }
+  TubeDomains initial() const {
+    TubeDomains d = sensor;
+    add_network_priors(d, network);
+    return d;
+  }
+};
+
+const Problem& reference(int variant = 0) {
+  static std::map<int, Problem> cache;
+  auto it = cache.find(variant);
+  if (it == cache.end()) {
+    SimulationOptions o;
+    o.seed = 1;
+    if (variant == 1) o.unassociated = 1.0;
+    if (variant == 2) o.outliers = 1;
+    it = cache.emplace(variant, Problem(o)).first;
+  }
+  return it->second;
+}
+
+void BM_ColdSolve(benchmark::State& state) {
+  const Problem& p = reference();
+  int sweeps = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    TubeDomains d = p.initial();
+    state.ResumeTiming();
+    sweeps = solve(p.network, d).sweeps;
+    benchmark::DoNotOptimize(d.px.data());
+  }
+  state.counters["steps"] = static_cast<double>(p.mission.size());
+  state.counters["sweeps"] = sweeps;
+}
+BENCHMARK(BM_ColdSolve)->Unit(benchmark::kMillisecond);
+
+void BM_SensorEnclosures(benchmark::State& state) {
+  const Problem& p = reference();
+  for (auto _ : state) benchmark::DoNotOptimize(sensor_domains(p.mission, p.mission.model).dx.data());
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * p.mission.size()));
+}
+BENCHMARK(BM_SensorEnclosures)->Unit(benchmark::kMillisecond);
+
+// Cold propagation on missions of 10^5, 10^6 and 10^7 steps (the survey repeated).
+void BM_ColdSolveScaling(benchmark::State& state) {
+  SimulationOptions o;
+  o.seed = 2;
+  o.duration = static_cast<double>(state.range(0)) / 10.0;
+  const Problem p(o);
+  const std::size_t bytes_per_step = 6 * sizeof(Interval);
+  for (auto _ : state) {
+    state.PauseTiming();
+    TubeDomains d = p.initial();
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(solve(p.network, d).sweeps);
+  }
+  state.counters["steps"] = static_cast<double>(p.mission.size());
+  state.counters["ns_per_step"] =
+      benchmark::Counter(static_cast<double>(p.mission.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["domain_bytes_per_step"] = static_cast<double>(bytes_per_step);
+}
+BENCHMARK(BM_ColdSolveScaling)->Arg(100000)->Arg(1000000)->Arg(10000000)->Unit(benchmark::kMillisecond)->Iterations(2);
+
+void BM_WarmRerunOneDetection(benchmark::State& state) {
+  const Problem& p = reference();
+  // The solved domains without the last detection, then that detection added.
+  MissionNetwork before = p.network;
+  before.detections.pop_back();
+  TubeDomains solved = p.sensor;
+  add_network_priors(solved, before);
+  solve(before, solved);
+  solved.candidates.push_back(p.network.detections.back().allowed);
+  const std::vector<std::size_t> added = {p.network.detections.size() - 1};
+  std::size_t items = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    TubeDomains d = solved;
+    state.ResumeTiming();
+    items = propagate_from(p.network, d, added).work_items;
+  }
+  state.counters["work_items"] = static_cast<double>(items);
+}
+BENCHMARK(BM_WarmRerunOneDetection)->Unit(benchmark::kMicrosecond);
+
+void BM_AssociationWithoutNumbers(benchmark::State& state) {
+  const Problem& p = reference(1);
+  for (auto _ : state) {
+    state.PauseTiming();
+    TubeDomains d = p.initial();
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(solve(p.network, d).sweeps);
+  }
+  state.counters["marks"] = static_cast<double>(p.mission.mark_count());
+}
+BENCHMARK(BM_AssociationWithoutNumbers)->Unit(benchmark::kMillisecond);
+
+void BM_OutlierTolerantSolveQ2(benchmark::State& state) {
+  const Problem& p = reference(2);
+  OutlierReport r;
+  for (auto _ : state) {
+    TubeDomains d;
+    r = solve_with_outliers(p.network, p.sensor, d, {2, {}});
+  }
+  state.counters["q_star"] = r.minimal_outliers;
+  state.counters["full_solves"] = r.full_solves;
+  state.counters["screened"] = r.hypotheses_screened;
+}
+BENCHMARK(BM_OutlierTolerantSolveQ2)->Unit(benchmark::kMillisecond);
+
+}  // namespace
