@@ -254,6 +254,10 @@ Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
     m.gps_time.push_back(m.time[k]);
     m.gps_north.push_back(m.truth_x[k] + error(Errors::gps_north, model.gps_metres));
     m.gps_east.push_back(m.truth_y[k] + error(Errors::gps_east, model.gps_metres));
+    // Boxes of the metric bound, usable in memory; io/ recomputes them from the
+    // longitudes and latitudes when the mission is written and read back.
+    m.gps_north_halfwidth.push_back(model.gps_metres);
+    m.gps_east_halfwidth.push_back(model.gps_metres);
     m.truth_gps_outlier.push_back(0);
   }
   return m;

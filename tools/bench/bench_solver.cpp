@@ -17,18 +17,6 @@ namespace {
 
 using namespace gesmi;
 
-std::vector<PositionFix> local_fixes(const Mission& m) {
-  std::vector<PositionFix> fixes;
-  for (std::size_t i = 0; i < m.gps_time.size(); ++i) {
-    PositionFix f;
-    f.time = m.gps_time[i];
-    f.box[0] = Interval::around(m.gps_north[i], m.model.gps_metres + 0.01);
-    f.box[1] = Interval::around(m.gps_east[i], m.model.gps_metres + 0.01);
-    f.source_index = i;
-    fixes.push_back(f);
-  }
-  return fixes;
-}
 
 // A simulated mission with its network and sensor domains, built once per setup.
 struct Problem {
@@ -36,7 +24,7 @@ struct Problem {
   MissionNetwork network;
   TubeDomains sensor;
   explicit Problem(const SimulationOptions& o) : mission(simulate_mission(o)) {
-    network = build_network(mission, mission.model, local_fixes(mission));
+    network = build_network(mission, mission.model, gps_fixes(mission));
     sensor = sensor_domains(mission, mission.model);
   }
   TubeDomains initial() const {

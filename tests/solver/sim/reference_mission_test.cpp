@@ -16,19 +16,6 @@
 namespace gesmi {
 namespace {
 
-// Fixes in the local frame as io/ would make them (boxes of the model's bound).
-std::vector<PositionFix> local_fixes(const Mission& m) {
-  std::vector<PositionFix> fixes;
-  for (std::size_t i = 0; i < m.gps_time.size(); ++i) {
-    PositionFix f;
-    f.time = m.gps_time[i];
-    f.box[0] = Interval::around(m.gps_north[i], m.model.gps_metres);
-    f.box[1] = Interval::around(m.gps_east[i], m.model.gps_metres);
-    f.source_index = i;
-    fixes.push_back(f);
-  }
-  return fixes;
-}
 
 struct Solved {
   TubeDomains domains;
@@ -36,7 +23,7 @@ struct Solved {
 };
 
 Solved solve_mission(const Mission& m) {
-  const MissionNetwork net = build_network(m, m.model, local_fixes(m));
+  const MissionNetwork net = build_network(m, m.model, gps_fixes(m));
   Solved s{initial_domains(m, m.model, net), {}};
   s.report = solve(net, s.domains);
   return s;
@@ -130,7 +117,7 @@ TEST(ReferenceMission, AnInjectedOutlierIsReportedWithItsDetectionNumber) {
     ASSERT_FALSE(s.report.consistent());
     // The diagnosis that `gesmi solve` runs on an inconsistency: the single
     // measurements whose removal restores consistency. The corrupted mark is one.
-    const MissionNetwork net = build_network(m, m.model, local_fixes(m));
+    const MissionNetwork net = build_network(m, m.model, gps_fixes(m));
     TubeDomains d;
     const OutlierReport r = solve_with_outliers(net, sensor_domains(m, m.model), d, {1, {}});
     ASSERT_EQ(r.minimal_outliers, 1);
