@@ -189,6 +189,20 @@ void H5File::write(const std::string& dataset, std::span<const std::int32_t> val
                 &H5File::ensure_parent_groups, path_);
 }
 
+void H5File::write_3d(const std::string& dataset, std::span<const double> values, std::size_t d0, std::size_t d1,
+                      std::size_t d2) {
+  ensure_parent_groups(dataset);
+  if (values.size() != d0 * d1 * d2) fail(dataset, "internal shape mismatch");
+  const hsize_t dims[3] = {d0, d1, d2};
+  const H5Handle space(H5Screate_simple(3, dims, nullptr), H5Sclose);
+  const H5Handle d(H5Dcreate2(file_.get(), dataset.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                              H5P_DEFAULT),
+                   H5Dclose);
+  if (!d.valid()) fail(dataset, "cannot create the dataset");
+  if (!values.empty() && H5Dwrite(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+    fail(dataset, "cannot write (disk full?)");
+}
+
 namespace {
 
 H5Handle open_object(hid_t file, const std::string& object) {

@@ -68,6 +68,10 @@ class H5File {
   void write(const std::string& dataset, std::span<const std::int32_t> values, std::size_t rows,
              std::size_t columns = 1, int rank = 1);
 
+  /// Writes a 3-D dataset (e.g. N x 3 x 3 covariances), row-major.
+  void write_3d(const std::string& dataset, std::span<const double> values, std::size_t d0, std::size_t d1,
+                std::size_t d2);
+
   // Attributes on an object ("/" for the file).
   void set_attribute(const std::string& object, const std::string& name, double value);
   void set_attribute(const std::string& object, const std::string& name, std::int64_t value);

@@ -1,0 +1,24 @@
+#pragma once
+// The Kalman smoother's result file (docs/formats.md): /time, /kalman/mean (N x 3),
+// /kalman/cov (N x 3 x 3), /kalman/mines/mean (K x 3), /kalman/mines/cov (K x 3 x 3),
+// and attributes (timings, options, containment on simulated missions).
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "solver/kalman/kalman_smoother.h"
+
+namespace gesmi::io {
+
+struct KalmanFile {
+  std::vector<double> time;
+  KalmanResult result;
+  KalmanOptions options;
+  std::map<std::string, double> timings_ms;
+  double containment_trajectory = 0.0, containment_mines = 0.0;  // NaN without truth
+};
+
+void write_kalman_result(const KalmanFile& file, const std::string& path);
+
+}  // namespace gesmi::io

@@ -1,0 +1,159 @@
+#include "solver/kalman/arrowhead_chain.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
+namespace gesmi {
+
+ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, double prior_info)
+    : n_(n), q_(q), diag_(n, Mat3::Zero()), eta_(n, Vec3::Zero()), step_info_(n > 0 ? n - 1 : 0, Mat3::Zero()),
+      mixed_(n), d_(MatX::Identity(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)) * prior_info),
+      eta_m_(VecX::Zero(static_cast<Eigen::Index>(q))) {}
+
+void ArrowheadChain::add_position(std::size_t k, const Mat3& information, const Vec3& mean) {
+  diag_[k] += information;
+  eta_[k] += information * mean;
+}
+
+void ArrowheadChain::add_step(std::size_t k, const Mat3& w, const Vec3& delta) {
+  // Residual p_{k+1} - p_k - delta: blocks (k,k) and (k+1,k+1) get W, (k,k+1) gets -W.
+  diag_[k] += w;
+  diag_[k + 1] += w;
+  step_info_[k] += w;
+  eta_[k] -= w * delta;
+  eta_[k + 1] += w * delta;
+}
+
+void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVectorXd& hm, double z, double w) {
+  diag_[k] += w * hp.transpose() * hp;
+  eta_[k] += w * z * hp.transpose();
+  MatX& b = mixed_[k];
+  if (b.size() == 0) b = MatX::Zero(3, static_cast<Eigen::Index>(q_));
+  b += w * hp.transpose() * hm;
+  d_ += w * hm.transpose() * hm;
+  eta_m_ += w * z * hm.transpose();
+}
+
+// Between two steps that carry mixed factors ("events"), the coupling of p_k to the
+// static unknowns evolves as B_k = T_k B_e with T_k a 3x3 matrix and B_e the full
+// 3 x q coupling at the last event e. Accumulating T_k^T S_k T_k and T_k^T c_k over a
+// segment lets the q x q updates happen once per event instead of once per step, and
+// the backward recursions run on 3x3 blocks, so a step costs a few 3x3 products.
+void ArrowheadChain::solve() {
+  const auto q = static_cast<Eigen::Index>(q_);
+  struct Step {
+    Mat3 s, l, p;  // conditional covariance, -S W, S T (so that M_k = P_k B_e)
+    Vec3 c;
+    int segment = -1;
+  };
+  std::vector<Step> steps(n_);
+  std::vector<MatX> segment_b;  // B_e of each segment (3 x q)
+  MatX d = d_;
+  VecX eta_m = eta_m_;
+  Mat3 a = diag_.empty() ? Mat3::Zero() : diag_[0];
+  Vec3 eta = eta_.empty() ? Vec3::Zero() : eta_[0];
+  Mat3 t = Mat3::Identity();
+  Mat3 acc = Mat3::Zero();
+  Vec3 acc_eta = Vec3::Zero();
+  const auto close_segment = [&] {
+    if (segment_b.empty()) return;
+    const MatX& b = segment_b.back();
+    d.noalias() -= b.transpose() * acc * b;
+    eta_m.noalias() -= b.transpose() * acc_eta;
+    acc.setZero();
+    acc_eta.setZero();
+  };
+  const auto open_segment = [&](std::size_t k, const MatX* carried) {
+    MatX b = mixed_[k];
+    if (carried) b += t * *carried;
+    close_segment();
+    segment_b.push_back(std::move(b));
+    t.setIdentity();
+  };
+  if (n_ > 0 && mixed_[0].size() != 0) open_segment(0, nullptr);
+  for (std::size_t k = 0; k < n_; ++k) {
+    Step& st = steps[k];
+    st.s = a.inverse();
+    st.c = st.s * eta;
+    if (!segment_b.empty()) {
+      st.segment = static_cast<int>(segment_b.size()) - 1;
+      st.p = st.s * t;
+      acc.noalias() += t.transpose() * st.p;
+      acc_eta.noalias() += t.transpose() * st.c;
+    }
+    if (k + 1 == n_) break;
+    const Mat3& w = step_info_[k];  // the (k, k+1) block is -W
+    st.l = -st.s * w;
+    a = diag_[k + 1] - w * st.s * w;
+    eta = eta_[k + 1] + w * st.c;
+    if (!segment_b.empty()) t = w * st.p;
+    if (mixed_[k + 1].size() != 0) {
+      if (segment_b.empty()) {
+        open_segment(k + 1, nullptr);
+      } else {
+        const MatX carried = segment_b.back();
+        open_segment(k + 1, &carried);
+      }
+    }
+  }
+  close_segment();
+
+  const Eigen::LDLT<MatX> static_solver(d);
+  m_mean_ = static_solver.solve(eta_m);
+  m_cov_ = static_solver.solve(MatX::Identity(q, q));
+  // Per segment: B_e m, B_e Sigma_mm and B_e Sigma_mm B_e^T.
+  std::vector<Vec3> bm;
+  std::vector<MatX> b_sigma;
+  std::vector<Mat3> b_sigma_b;
+  for (const MatX& b : segment_b) {
+    bm.push_back(b * m_mean_);
+    b_sigma.push_back(b * m_cov_);
+    b_sigma_b.push_back(b_sigma.back() * b.transpose());
+  }
+  means_.assign(n_, Vec3::Zero());
+  covariances_.assign(n_, Mat3::Zero());
+  // Backward: p_k = c_k - L_k p_{k+1} - P_k B_e m. Within a segment the cross covariance
+  // X_{k} = Cov(p_k, m) is alpha_k Z + beta_k B_e Sigma_mm, with Z = X at the step after
+  // the segment; only Y_k = X_{k+1} B_e^T (3x3) is needed per step.
+  MatX z = MatX::Zero(3, q);  // X_{k+1} in full, valid at segment boundaries
+  Mat3 alpha = Mat3::Identity(), beta = Mat3::Zero();  // X_{k+1} = alpha Z + beta B_e Sigma
+  Mat3 y_end = Mat3::Zero();                           // Z B_e^T for the current segment
+  int current = -2;
+  for (std::size_t k = n_; k-- > 0;) {
+    const Step& st = steps[k];
+    if (st.segment != current) {
+      // Entering a new segment (going backward): X_{k+1} in full from the previous one.
+      if (current >= 0 && k + 1 < n_) z = alpha * z + beta * b_sigma[static_cast<std::size_t>(current)];
+      alpha.setIdentity();
+      beta.setZero();
+      current = st.segment;
+      if (current >= 0) y_end = z * segment_b[static_cast<std::size_t>(current)].transpose();
+    }
+    Vec3 p = st.c;
+    Mat3 cov = st.s;
+    if (k + 1 < n_) {
+      p -= st.l * means_[k + 1];
+      cov += st.l * covariances_[k + 1] * st.l.transpose();
+    }
+    if (current >= 0) {
+      const auto e = static_cast<std::size_t>(current);
+      p -= st.p * bm[e];
+      cov += st.p * b_sigma_b[e] * st.p.transpose();
+      if (k + 1 < n_) {
+        const Mat3 y = alpha * y_end + beta * b_sigma_b[e];  // X_{k+1} B_e^T
+        const Mat3 cross = st.l * y * st.p.transpose();
+        cov += cross + cross.transpose();
+      }
+      // X_k = -L_k X_{k+1} - P_k B_e Sigma_mm.
+      alpha = (-st.l * alpha).eval();
+      beta = (-st.l * beta - st.p).eval();
+    } else if (k + 1 < n_) {
+      alpha = (-st.l * alpha).eval();  // before the first event: X_k = -L_k X_{k+1}
+      beta = (-st.l * beta).eval();
+    }
+    means_[k] = p;
+    covariances_[k] = 0.5 * (cov + cov.transpose());
+  }
+}
+
+}  // namespace gesmi

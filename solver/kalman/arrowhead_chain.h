@@ -1,0 +1,59 @@
+#pragma once
+// A Gaussian linear system on a chain of 3-D positions p_0..p_{n-1} plus a block of
+// static unknowns m (the mines): information contributions are added factor by
+// factor, then solved by a forward pass over the chain (an information filter: block
+// elimination of p_0, p_1, ...) and a backward pass (back substitution and the
+// covariance recursion). On a linear model this gives exactly the smoothed means and
+// covariances of a Kalman filter followed by Rauch-Tung-Striebel smoothing, with 3x3
+// blocks along the chain: O(n q^2) time for q static unknowns, no n x n matrix.
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace gesmi {
+
+class ArrowheadChain {
+ public:
+  using Mat3 = Eigen::Matrix3d;
+  using Vec3 = Eigen::Vector3d;
+  using MatX = Eigen::MatrixXd;
+  using VecX = Eigen::VectorXd;
+  using Row3 = Eigen::RowVector3d;
+
+  /// n positions, q static unknowns (with a weak prior of information prior_info on
+  /// each, so that unknowns no factor reaches stay finite).
+  ArrowheadChain(std::size_t n, std::size_t q, double prior_info = 1e-12);
+
+  /// Information W and mean term on p_k alone: adds W to the block and W * mean.
+  void add_position(std::size_t k, const Mat3& information, const Vec3& mean);
+  /// p_{k+1} - p_k = delta with information W (the odometry between two samples).
+  void add_step(std::size_t k, const Mat3& information, const Vec3& delta);
+  /// One scalar measurement z = hp . p_k + hm . m with information w (hm has q entries).
+  void add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVectorXd& hm, double z, double w);
+
+  /// Solves; afterwards mean(k), covariance(k), static_mean(), static_covariance().
+  void solve();
+  /// The estimate of (p_k, m) from the factors at steps <= k only (the filter), valid
+  /// during the forward pass only through filtered_at() called from a factor callback.
+  const Vec3& mean(std::size_t k) const { return means_[k]; }
+  const Mat3& covariance(std::size_t k) const { return covariances_[k]; }
+  const VecX& static_mean() const { return m_mean_; }
+  const MatX& static_covariance() const { return m_cov_; }
+  std::size_t size() const { return n_; }
+
+ private:
+  std::size_t n_, q_;
+  std::vector<Mat3> diag_;        // information block of p_k
+  std::vector<Vec3> eta_;         // information vector of p_k
+  std::vector<Mat3> step_info_;   // W_k between p_k and p_k+1
+  std::vector<MatX> mixed_;       // B_k (3 x q), empty when no mixed factor at k
+  MatX d_;                        // information of m
+  VecX eta_m_;
+  // Results.
+  std::vector<Vec3> means_;
+  std::vector<Mat3> covariances_;
+  VecX m_mean_;
+  MatX m_cov_;
+};
+
+}  // namespace gesmi

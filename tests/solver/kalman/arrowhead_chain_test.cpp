@@ -1,0 +1,139 @@
+// The chain solver against closed forms: a dense least-squares solve of the same
+// linear-Gaussian problem (means and covariances), and the textbook Kalman filter with
+// Rauch-Tung-Striebel smoothing on a chain without static unknowns.
+
+#include "solver/kalman/arrowhead_chain.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <random>
+
+namespace gesmi {
+namespace {
+
+using Mat3 = Eigen::Matrix3d;
+using Vec3 = Eigen::Vector3d;
+using MatX = Eigen::MatrixXd;
+using VecX = Eigen::VectorXd;
+
+Mat3 random_spd(std::mt19937_64& rng, double scale) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Mat3 a;
+  for (int i = 0; i < 9; ++i) a(i / 3, i % 3) = u(rng);
+  return scale * (a * a.transpose() + 0.5 * Mat3::Identity());
+}
+
+// The same factors applied to both a chain and a dense information matrix.
+struct Both {
+  std::size_t n, q;
+  ArrowheadChain chain;
+  MatX lambda;
+  VecX eta;
+  Both(std::size_t n_, std::size_t q_) : n(n_), q(q_), chain(n_, q_, 1e-12), lambda(MatX::Zero(3 * n_ + q_, 3 * n_ + q_)), eta(VecX::Zero(3 * n_ + q_)) {
+    lambda.bottomRightCorner(q_, q_) = 1e-12 * MatX::Identity(q_, q_);
+  }
+  Eigen::Index p(std::size_t k) const { return static_cast<Eigen::Index>(3 * k); }
+  Eigen::Index m() const { return static_cast<Eigen::Index>(3 * n); }
+  void position(std::size_t k, const Mat3& w, const Vec3& mean) {
+    chain.add_position(k, w, mean);
+    lambda.block<3, 3>(p(k), p(k)) += w;
+    eta.segment<3>(p(k)) += w * mean;
+  }
+  void step(std::size_t k, const Mat3& w, const Vec3& delta) {
+    chain.add_step(k, w, delta);
+    lambda.block<3, 3>(p(k), p(k)) += w;
+    lambda.block<3, 3>(p(k + 1), p(k + 1)) += w;
+    lambda.block<3, 3>(p(k), p(k + 1)) -= w;
+    lambda.block<3, 3>(p(k + 1), p(k)) -= w;
+    eta.segment<3>(p(k)) -= w * delta;
+    eta.segment<3>(p(k + 1)) += w * delta;
+  }
+  void mixed(std::size_t k, const Eigen::RowVector3d& hp, const Eigen::RowVectorXd& hm, double z, double w) {
+    chain.add_mixed(k, hp, hm, z, w);
+    Eigen::RowVectorXd h = Eigen::RowVectorXd::Zero(static_cast<Eigen::Index>(3 * n + q));
+    h.segment<3>(p(k)) = hp;
+    h.tail(static_cast<Eigen::Index>(q)) = hm;
+    lambda += w * h.transpose() * h;
+    eta += w * z * h.transpose();
+  }
+};
+
+TEST(ArrowheadChain, MatchesADenseLeastSquaresSolve) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const std::size_t n = 60, q = 6;
+  Both b(n, q);
+  for (std::size_t k = 0; k + 1 < n; ++k) b.step(k, random_spd(rng, 50.0), Vec3(u(rng), u(rng), u(rng)));
+  for (std::size_t k = 0; k < n; k += 7) b.position(k, random_spd(rng, 0.5), Vec3(u(rng), u(rng), 10 * u(rng)));
+  for (const std::size_t k : {std::size_t{11}, std::size_t{12}, std::size_t{30}, std::size_t{45}, std::size_t{59}}) {
+    for (int r = 0; r < 3; ++r) {
+      Eigen::RowVectorXd hm = Eigen::RowVectorXd::Zero(q);
+      for (std::size_t i = 0; i < q; ++i) hm(static_cast<Eigen::Index>(i)) = u(rng);
+      b.mixed(k, Eigen::RowVector3d(u(rng), u(rng), u(rng)), hm, u(rng), 3.0 + u(rng));
+    }
+  }
+  b.chain.solve();
+  const Eigen::LDLT<MatX> dense(b.lambda);
+  const VecX x = dense.solve(b.eta);
+  const MatX cov = dense.solve(MatX::Identity(b.lambda.rows(), b.lambda.cols()));
+  for (std::size_t k = 0; k < n; ++k) {
+    EXPECT_LT((b.chain.mean(k) - x.segment<3>(b.p(k))).norm(), 1e-8) << k;
+    EXPECT_LT((b.chain.covariance(k) - cov.block<3, 3>(b.p(k), b.p(k))).norm(), 1e-8) << k;
+  }
+  EXPECT_LT((b.chain.static_mean() - x.tail(q)).norm(), 1e-8);
+  EXPECT_LT((b.chain.static_covariance() - cov.bottomRightCorner(q, q)).norm(), 1e-8);
+}
+
+// Textbook Kalman filter and RTS smoother for x(k+1) = x(k) + u(k) + w, y(k) = x(k) + v.
+TEST(ArrowheadChain, MatchesTheTextbookKalmanRtsSmoother) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const std::size_t n = 200;
+  std::vector<Vec3> control(n), measurement(n);
+  std::vector<Mat3> q_noise(n), r_noise(n);
+  ArrowheadChain chain(n, 0);
+  const Mat3 p0 = 100.0 * Mat3::Identity();
+  const Vec3 x0(1.0, -2.0, 3.0);
+  chain.add_position(0, p0.inverse(), x0);
+  for (std::size_t k = 0; k < n; ++k) {
+    control[k] = Vec3(u(rng), u(rng), u(rng));
+    measurement[k] = Vec3(u(rng), u(rng), u(rng)) * 10.0;
+    q_noise[k] = random_spd(rng, 0.01);
+    r_noise[k] = random_spd(rng, 2.0);
+    chain.add_position(k, r_noise[k].inverse(), measurement[k]);
+    if (k + 1 < n) chain.add_step(k, q_noise[k].inverse(), control[k]);
+  }
+  chain.solve();
+  // Forward filter.
+  std::vector<Vec3> xf(n), xp(n);
+  std::vector<Mat3> pf(n), pp(n);
+  Vec3 x = x0;
+  Mat3 p = p0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k > 0) {
+      x = xf[k - 1] + control[k - 1];
+      p = pf[k - 1] + q_noise[k - 1];
+    }
+    xp[k] = x;
+    pp[k] = p;
+    const Mat3 gain = p * (p + r_noise[k]).inverse();
+    xf[k] = x + gain * (measurement[k] - x);
+    pf[k] = (Mat3::Identity() - gain) * p;
+  }
+  // RTS backward pass.
+  Vec3 xs = xf[n - 1];
+  Mat3 ps = pf[n - 1];
+  EXPECT_LT((chain.mean(n - 1) - xs).norm(), 1e-9);
+  for (std::size_t k = n - 1; k-- > 0;) {
+    const Mat3 c = pf[k] * pp[k + 1].inverse();
+    xs = xf[k] + c * (xs - xp[k + 1]);
+    ps = pf[k] + c * (ps - pp[k + 1]) * c.transpose();
+    EXPECT_LT((chain.mean(k) - xs).norm(), 1e-9) << k;
+    EXPECT_LT((chain.covariance(k) - ps).norm(), 1e-9) << k;
+  }
+}
+
+}  // namespace
+}  // namespace gesmi
