@@ -23,9 +23,18 @@ NorthEast LocalFrame::to_local(double latitude, double longitude) const {
 
 GeoOrigin LocalFrame::to_geodetic(double north, double east) const {
   const GeographicLib::LocalCartesian frame(origin_.latitude, origin_.longitude, 0.0);
-  // The point of the sea surface below (north, east) of the tangent plane.
-  double lat = 0, lon = 0, h = 0;
-  frame.Reverse(east, north, 0.0, lat, lon, h);
+  // The inverse of to_local: the sea-surface point whose projection on the tangent
+  // plane is (north, east). That point lies below the plane by about d^2 / 2R, and
+  // taking the surface point under (north, east, 0) along its own normal instead
+  // would shift it by about d^3 / 2R^2 (12 mm at 10 km). Solve for its height in the
+  // plane's frame: each pass reduces the error by a factor near (d / R)^2.
+  double lat = 0, lon = 0, h = 0, up = 0;
+  for (int pass = 0; pass < 3; ++pass) {
+    frame.Reverse(east, north, up, lat, lon, h);
+    double e = 0, n = 0;
+    frame.Forward(lat, lon, 0.0, e, n, up);
+  }
+  frame.Reverse(east, north, up, lat, lon, h);
   return {lat, lon};
 }
 
@@ -67,11 +76,19 @@ void fill_local_gps(Mission& m, const std::string& source) {
     const double lon_m = m.model.gps_lon_deg * degree * radius * std::cos(m.gps_latitude[i] * degree);
     m.gps_north_halfwidth[i] = add_up(std::max(lat_m, m.model.gps_metres), kLocalFrameError);
     m.gps_east_halfwidth[i] = add_up(std::max(lon_m, m.model.gps_metres), kLocalFrameError);
+    // A bound given with the fix (a position from a text log) replaces the model's.
+    if (!m.gps_given_north_halfwidth.empty()) {
+      m.gps_north_halfwidth[i] = add_up(m.gps_given_north_halfwidth[i], kLocalFrameError);
+      m.gps_east_halfwidth[i] = add_up(m.gps_given_east_halfwidth[i], kLocalFrameError);
+    }
   }
   // Meridian convergence over the mission area: the fixes' distance plus 2 km of
-  // survey around them, times tan(latitude) / R.
+  // survey around them, times tan(latitude) / R, at the largest latitude of the area
+  // (at the equator the convergence is not zero a few km north or south of it).
   const double extent = std::min(farthest + 2000.0, kLocalFrameZone);
-  m.heading_frame_margin = extent / (0.99 * a) * std::fabs(std::tan(m.origin.latitude * degree)) * 1.01;
+  const double angle = extent / (0.99 * a);  // rad, the extent seen from the Earth's centre
+  const double latitude = std::min(std::fabs(m.origin.latitude) * degree + angle, std::numbers::pi / 2 - 0.01);
+  m.heading_frame_margin = angle * std::tan(latitude) * 1.01;
 }
 
 }  // namespace gesmi::io

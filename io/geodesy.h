@@ -3,11 +3,15 @@
 // frame about its origin (a local tangent plane, GeographicLib::LocalCartesian),
 // and the GPS boxes of a mission in that frame.
 //
-// Conversion error (docs/formats.md): the solver integrates DVL distances along the
-// sea surface while the tangent plane holds their projections. Over a 10 km zone
-// the difference is below d^3 / (3 R^2) = 8 mm; gps_boxes() widens every box by
-// kLocalFrameError = 1 cm. Meridian convergence (true north turning against the
-// frame's north) is returned separately for the heading bound.
+// Conversion error (docs/formats.md, measured in tests/io/geodesy_test.cpp): the
+// solver integrates DVL distances along the sea surface while the tangent plane
+// holds their projections. Between two points of a zone of radius d = 10 km the
+// difference is at most d^3 / (3 M^2) = 8.3 mm (M = b^2/a, the smallest radius of
+// curvature); fill_local_gps() widens every box by kLocalFrameError = 1 cm. Along a
+// path the frame's scale differs from 1 by at most d^2 / (2 M^2) = 1.25e-6, so a
+// path's error grows with its length (docs/formats.md). Points convert both ways
+// exactly (to_geodetic inverts to_local). Meridian convergence (true north turning
+// against the frame's north) is returned separately for the heading bound.
 
 #include "solver/mission/mission.h"
 
@@ -23,7 +27,9 @@ struct NorthEast {
 class LocalFrame {
  public:
   explicit LocalFrame(const GeoOrigin& origin);
+  /// Projection on the tangent plane of the sea-surface point (height 0).
   NorthEast to_local(double latitude, double longitude) const;
+  /// The sea-surface point whose projection is (north, east): to_local's inverse.
   GeoOrigin to_geodetic(double north, double east) const;
 
  private:
@@ -35,7 +41,8 @@ class LocalFrame {
 void set_geodetic_gps(Mission& mission);
 
 /// Fills gps_north/east and their half-widths, and heading_frame_margin, from the
-/// fixes, the origin and the sensor model. Throws FormatError (naming `source` and
+/// fixes, the origin and the sensor model (or the per-fix given bounds when the
+/// mission has them). Throws FormatError (naming `source` and
 /// the fix) when a fix lies farther than kLocalFrameZone from the origin.
 void fill_local_gps(Mission& mission, const std::string& source);
 

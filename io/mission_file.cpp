@@ -90,6 +90,14 @@ void validate_mission(const Mission& m, const std::string& source) {
     if (!std::isfinite(m.gps_longitude[i]) || std::fabs(m.gps_longitude[i]) > 180.0)
       bad(source, "/gps/lonlat", row_text(i) + ": longitude must be in [-180, 180]");
   }
+  if (!m.gps_given_north_halfwidth.empty() || !m.gps_given_east_halfwidth.empty()) {
+    expect_size(m.gps_given_north_halfwidth.size(), g, source, "/gps/halfwidth north");
+    expect_size(m.gps_given_east_halfwidth.size(), g, source, "/gps/halfwidth east");
+    for (std::size_t i = 0; i < g; ++i)
+      if (!(m.gps_given_north_halfwidth[i] >= 0.0) || !std::isfinite(m.gps_given_north_halfwidth[i]) ||
+          !(m.gps_given_east_halfwidth[i] >= 0.0) || !std::isfinite(m.gps_given_east_halfwidth[i]))
+        bad(source, "/gps/halfwidth", row_text(i) + ": half-width must be finite and >= 0");
+  }
 
   // Marks.
   const std::size_t mk = m.mark_time.size();
@@ -178,6 +186,15 @@ Mission read_mission(const std::string& path) {
     m.gps_latitude.resize(s.rows);
     f.read_column_into("/gps/lonlat", 0, m.gps_longitude);
     f.read_column_into("/gps/lonlat", 1, m.gps_latitude);
+    if (f.has("/gps/halfwidth")) {
+      const H5Shape h = f.shape("/gps/halfwidth");
+      if (h.rank != 2 || h.columns != 2 || h.rows != s.rows)
+        throw FormatError(path + ": /gps/halfwidth: expected " + std::to_string(s.rows) + " x 2");
+      m.gps_given_north_halfwidth.resize(h.rows);
+      m.gps_given_east_halfwidth.resize(h.rows);
+      f.read_column_into("/gps/halfwidth", 0, m.gps_given_north_halfwidth);
+      f.read_column_into("/gps/halfwidth", 1, m.gps_given_east_halfwidth);
+    }
   }
   if (f.has("/marks/time")) {
     m.mark_time = f.read_doubles("/marks/time");
@@ -231,6 +248,14 @@ void write_mission(const Mission& m, const std::string& path) {
       lonlat[2 * i + 1] = m.gps_latitude[i];
     }
     f.write("/gps/lonlat", lonlat, g, 2, 2);
+    if (!m.gps_given_north_halfwidth.empty()) {
+      std::vector<double> bounds(2 * g);
+      for (std::size_t i = 0; i < g; ++i) {
+        bounds[2 * i] = m.gps_given_north_halfwidth[i];
+        bounds[2 * i + 1] = m.gps_given_east_halfwidth[i];
+      }
+      f.write("/gps/halfwidth", bounds, g, 2, 2);
+    }
     const std::size_t mk = m.mark_count();
     f.write("/marks/time", m.mark_time, mk);
     f.write("/marks/mine", m.mark_mine, mk);

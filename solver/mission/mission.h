@@ -41,9 +41,14 @@ struct Mission {
   std::vector<double> gps_time;       // s
   std::vector<double> gps_longitude;  // deg WGS84
   std::vector<double> gps_latitude;   // deg WGS84
+  // Optional per-fix metric bounds given by the source (a GESMI text log's x/y
+  // half-widths, or a GPS CSV's north/east_halfwidth columns), replacing the model's
+  // GPS bounds for that fix: both empty, or both of length G.
+  std::vector<double> gps_given_north_halfwidth, gps_given_east_halfwidth;  // m
   // The same fixes in the local frame, filled by io/ (geodesy): centre and
-  // half-width of the box that contains the true position (model bound converted
-  // to metres, the metric bound, and the conversion error, whichever is larger).
+  // half-width of the box that contains the true position (the given bound, or else
+  // the larger of the model's degree bound in metres and its metric bound; plus the
+  // conversion error).
   std::vector<double> gps_north, gps_east;                     // m
   std::vector<double> gps_north_halfwidth, gps_east_halfwidth;  // m
   // Largest angle between true north at a point of the mission and the local

@@ -1,0 +1,59 @@
+#include "io/export_gesmi_txt.h"
+
+#include <algorithm>
+#include <string>
+
+#include "io/csv_number.h"
+#include "io/format_error.h"
+#include "io/import_gesmi_txt.h"
+
+namespace gesmi::io {
+
+void write_gesmi_txt(const Mission& m, std::ostream& out) {
+  const std::size_t n = m.size();
+  if (m.gps_north.size() != m.gps_time.size())
+    throw FormatError("GESMI text export: the GPS fixes are not in the local frame (read the mission with read_mission)");
+  // The fix of each sample, if any.
+  std::vector<std::ptrdiff_t> fix_at(n, -1);
+  for (std::size_t i = 0; i < m.gps_time.size(); ++i) {
+    const auto at = std::lower_bound(m.time.begin(), m.time.end(), m.gps_time[i]);
+    if (at == m.time.end() || *at != m.gps_time[i])
+      throw FormatError("GESMI text export: GPS fix " + std::to_string(i) + " at " + format_number(m.gps_time[i]) +
+                        " s is not at a sample time (the format holds positions on sample rows only)");
+    const auto k = static_cast<std::size_t>(at - m.time.begin());
+    if (fix_at[k] >= 0)
+      throw FormatError("GESMI text export: two GPS fixes at " + format_number(m.gps_time[i]) + " s");
+    fix_at[k] = static_cast<std::ptrdiff_t>(i);
+  }
+  const std::vector<double>* values[8] = {&m.roll, &m.pitch, &m.heading, &m.vx, &m.vy, &m.vz, &m.depth, &m.altitude};
+  const std::vector<double>* given[8] = {&m.half_widths.roll, &m.half_widths.pitch, &m.half_widths.heading,
+                                         &m.half_widths.vx,   &m.half_widths.vy,    &m.half_widths.vz,
+                                         &m.half_widths.depth, &m.half_widths.altitude};
+  out << "# GESMI text log written by gesmi export --format gesmi-txt (docs/formats.md)\n"
+      << "# SI units, angles in radians; x north and y east in metres about the origin "
+      << format_number(m.origin.latitude) << "," << format_number(m.origin.longitude) << " (lat,lon)\n"
+      << "# t roll droll pitch dpitch heading dheading vx dvx vy dvy vz dvz depth ddepth altitude daltitude x dx y dy\n";
+  std::string line;
+  for (std::size_t k = 0; k < n; ++k) {
+    line = format_number(m.time[k]);
+    for (std::size_t c = 0; c < 8; ++c) {
+      const double value = (*values[c])[k];
+      const double bound = given[c]->empty() ? model_half_width(m.model, c, value) : (*given[c])[k];
+      line += ' ' + format_number(value) + ' ' + format_number(bound);
+    }
+    if (fix_at[k] >= 0) {
+      const auto i = static_cast<std::size_t>(fix_at[k]);
+      const bool own = !m.gps_given_north_halfwidth.empty();
+      line += ' ' + format_number(m.gps_north[i]) + ' ' +
+              format_number(own ? m.gps_given_north_halfwidth[i] : m.gps_north_halfwidth[i]) + ' ' +
+              format_number(m.gps_east[i]) + ' ' +
+              format_number(own ? m.gps_given_east_halfwidth[i] : m.gps_east_halfwidth[i]);
+    } else {
+      line += " nan nan nan nan";
+    }
+    line += '\n';
+    out << line;
+  }
+}
+
+}  // namespace gesmi::io

@@ -1,0 +1,167 @@
+// The local frame's conversion error (io/geodesy.h, docs/formats.md) measured
+// against GeographicLib's geodesics on WGS84: points convert back and forth
+// exactly; distances along the surface and in the frame differ by at most
+// d^3 / (3 M^2) (8.3 mm for d = 10 km, M = b^2/a) between points of the zone, which
+// the 1 cm widening of GPS boxes covers; along a path the frame's scale differs
+// from 1 by at most d^2 / (2 M^2) (1.25e-6 at 10 km); meridian convergence stays
+// inside heading_frame_margin.
+
+#include "io/geodesy.h"
+
+#include <GeographicLib/Constants.hpp>
+#include <GeographicLib/Geodesic.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+namespace gesmi::io {
+namespace {
+
+using GeographicLib::Geodesic;
+
+constexpr double kZone = kLocalFrameZone;
+// The smallest radius of curvature of WGS84 (meridian, at the equator): b^2 / a.
+const double kRadius = GeographicLib::Constants::WGS84_a() * (1.0 - GeographicLib::Constants::WGS84_f()) *
+                       (1.0 - GeographicLib::Constants::WGS84_f());
+const double kChordBound = std::pow(kZone, 3) / (3.0 * kRadius * kRadius);  // 8.3 mm
+const double kScaleBound = kZone * kZone / (2.0 * kRadius * kRadius);        // 1.25e-6
+
+const GeoOrigin kOrigins[] = {{48.212920614, -4.458227931}, {0.0, 10.0}, {70.0, 20.0}, {-45.0, 170.0}};
+
+GeoOrigin destination(const GeoOrigin& from, double azimuth_deg, double distance) {
+  GeoOrigin to{};
+  Geodesic::WGS84().Direct(from.latitude, from.longitude, azimuth_deg, distance, to.latitude, to.longitude);
+  return to;
+}
+
+double surface_distance(const GeoOrigin& a, const GeoOrigin& b) {
+  double s = 0.0;
+  Geodesic::WGS84().Inverse(a.latitude, a.longitude, b.latitude, b.longitude, s);
+  return s;
+}
+
+double frame_distance(const LocalFrame& frame, const GeoOrigin& a, const GeoOrigin& b) {
+  const NorthEast p = frame.to_local(a.latitude, a.longitude), q = frame.to_local(b.latitude, b.longitude);
+  return std::hypot(p.north - q.north, p.east - q.east);
+}
+
+TEST(Geodesy, PointsConvertBackAndForthWithin10Nanometres) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> coordinate(-kZone / std::numbers::sqrt2, kZone / std::numbers::sqrt2);
+  for (const GeoOrigin& origin : kOrigins) {
+    const LocalFrame frame(origin);
+    for (int i = 0; i < 2000; ++i) {
+      const double north = coordinate(rng), east = coordinate(rng);
+      const GeoOrigin g = frame.to_geodetic(north, east);
+      const NorthEast back = frame.to_local(g.latitude, g.longitude);
+      ASSERT_NEAR(back.north, north, 1e-8);
+      ASSERT_NEAR(back.east, east, 1e-8);
+    }
+  }
+}
+
+TEST(Geodesy, DistancesAcrossThe10kmZoneDifferFromTheSurfaceByLessThanTheWidening) {
+  double worst = 0.0;
+  for (const GeoOrigin& origin : kOrigins) {
+    const LocalFrame frame(origin);
+    for (double azimuth = 0.0; azimuth < 180.0; azimuth += 7.5) {
+      // Across the whole zone through the origin (the worst case, 20 km), and from
+      // the origin to its edge.
+      const GeoOrigin a = destination(origin, azimuth, kZone), b = destination(origin, azimuth + 180.0, kZone);
+      const double across = std::fabs(surface_distance(a, b) - frame_distance(frame, a, b));
+      const double radial = std::fabs(surface_distance(origin, a) - frame_distance(frame, origin, a));
+      EXPECT_LE(across, 1.02 * kChordBound) << origin.latitude << " " << azimuth;
+      EXPECT_LE(radial, 1.02 * kChordBound / 2.0) << origin.latitude << " " << azimuth;
+      worst = std::max(worst, across);
+    }
+  }
+  // Random pairs of points of the zone.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> azimuth(0.0, 360.0), radius(0.0, 1.0);
+  for (const GeoOrigin& origin : kOrigins) {
+    const LocalFrame frame(origin);
+    for (int i = 0; i < 2000; ++i) {
+      const GeoOrigin a = destination(origin, azimuth(rng), kZone * std::sqrt(radius(rng)));
+      const GeoOrigin b = destination(origin, azimuth(rng), kZone * std::sqrt(radius(rng)));
+      worst = std::max(worst, std::fabs(surface_distance(a, b) - frame_distance(frame, a, b)));
+    }
+  }
+  RecordProperty("worst_distance_error_mm", std::to_string(worst * 1e3));
+  std::printf("worst surface-vs-frame distance error over the 10 km zone: %.2f mm (bound d^3/3M^2 = %.2f mm)\n",
+              worst * 1e3, kChordBound * 1e3);
+  EXPECT_GT(worst, 0.9 * kChordBound);  // the bound is reached: it is the right one
+  EXPECT_LT(worst, kLocalFrameError);
+}
+
+TEST(Geodesy, TheFrameScaleAlongAPathStaysWithin1Point25PerMillionAt10km) {
+  // A 10 m step at the edge of the zone, radial and tangential: the frame shortens
+  // radial steps by cos(d/R), so a path's error grows with its length (docs/formats.md).
+  double worst = 0.0;
+  for (const GeoOrigin& origin : kOrigins) {
+    const LocalFrame frame(origin);
+    for (double azimuth = 0.0; azimuth < 360.0; azimuth += 30.0) {
+      const GeoOrigin edge = destination(origin, azimuth, kZone - 10.0);
+      for (const double turn : {0.0, 90.0}) {
+        const GeoOrigin step = destination(edge, azimuth + turn, 10.0);
+        const double scale = frame_distance(frame, edge, step) / surface_distance(edge, step);
+        worst = std::max(worst, std::fabs(1.0 - scale));
+      }
+    }
+  }
+  std::printf("worst frame scale error at 10 km: %.3g (bound d^2/2M^2 = %.3g)\n", worst, kScaleBound);
+  EXPECT_LE(worst, 1.05 * kScaleBound);
+  EXPECT_GT(worst, 0.8 * kScaleBound);
+}
+
+TEST(Geodesy, GpsBoxesAreWidenedAndHoldTheFixes) {
+  Mission m;
+  m.origin = kOrigins[0];
+  m.gps_time = {0.0, 1.0};
+  const GeoOrigin far = destination(m.origin, 40.0, 3000.0);
+  m.gps_latitude = {m.origin.latitude, far.latitude};
+  m.gps_longitude = {m.origin.longitude, far.longitude};
+  fill_local_gps(m, "m");
+  EXPECT_NEAR(m.gps_north[0], 0.0, 1e-9);
+  EXPECT_NEAR(std::hypot(m.gps_north[1], m.gps_east[1]), 3000.0, 0.01);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_GE(m.gps_north_halfwidth[i], m.model.gps_metres + kLocalFrameError);
+    EXPECT_GE(m.gps_east_halfwidth[i], m.model.gps_metres + kLocalFrameError);
+  }
+  // Per-fix bounds replace the model's, still widened.
+  m.gps_given_north_halfwidth = {0.5, 7.0};
+  m.gps_given_east_halfwidth = {0.25, 0.0};
+  fill_local_gps(m, "m");
+  EXPECT_EQ(m.gps_north_halfwidth[0], 0.5 + kLocalFrameError);
+  EXPECT_GE(m.gps_east_halfwidth[1], kLocalFrameError);
+  EXPECT_LT(m.gps_east_halfwidth[1], 2 * kLocalFrameError);
+}
+
+TEST(Geodesy, MeridianConvergenceOverTheMissionAreaIsInsideTheHeadingMargin) {
+  for (const GeoOrigin& origin : kOrigins) {
+    Mission m;
+    m.origin = origin;
+    m.gps_time = {0.0, 1.0};
+    const GeoOrigin far = destination(origin, 60.0, 4000.0);
+    m.gps_latitude = {origin.latitude, far.latitude};
+    m.gps_longitude = {origin.longitude, far.longitude};
+    fill_local_gps(m, "m");
+    const LocalFrame frame(origin);
+    double worst = 0.0;
+    // Points up to the margin's extent (the farthest fix plus 2 km).
+    for (double azimuth = 0.0; azimuth < 360.0; azimuth += 10.0) {
+      const GeoOrigin p = destination(origin, azimuth, 6000.0);
+      const GeoOrigin north = destination(p, 0.0, 1.0);  // true north at p
+      const NorthEast a = frame.to_local(p.latitude, p.longitude), b = frame.to_local(north.latitude, north.longitude);
+      worst = std::max(worst, std::fabs(std::atan2(b.east - a.east, b.north - a.north)));
+    }
+    EXPECT_LE(worst, m.heading_frame_margin) << origin.latitude;
+    if (origin.latitude != 0.0) {
+      EXPECT_GT(worst, 0.9 * m.heading_frame_margin) << origin.latitude;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace gesmi::io

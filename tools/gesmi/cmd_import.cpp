@@ -1,0 +1,148 @@
+// gesmi import marks|nav|gesmi-txt: missions from text files (docs/formats.md).
+
+#include <cmath>
+#include <cstdio>
+
+#include "io/atomic_output.h"
+#include "io/import_mission.h"
+#include "io/mission_file.h"
+#include "tools/gesmi/cli_args.h"
+
+namespace gesmi::cli {
+namespace {
+
+namespace po = boost::program_options;
+
+GeoOrigin parse_origin(const std::string& text) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos) throw UsageError("--origin: expected LAT,LON in degrees, got '" + text + "'");
+  const GeoOrigin o{parse_double("--origin", text.substr(0, comma)), parse_double("--origin", text.substr(comma + 1))};
+  if (!std::isfinite(o.latitude) || std::fabs(o.latitude) > 89.0)
+    throw UsageError("--origin: latitude must be in [-89, 89] degrees, got '" + text + "'");
+  if (!std::isfinite(o.longitude) || std::fabs(o.longitude) > 180.0)
+    throw UsageError("--origin: longitude must be in [-180, 180] degrees, got '" + text + "'");
+  return o;
+}
+
+std::optional<int> parse_mines(const po::variables_map& v) {
+  if (!v.count("mines")) return std::nullopt;
+  const long long k = parse_integer("--mines", v["mines"].as<std::string>());
+  if (k < 0 || k > 64) throw UsageError("--mines: must be between 0 and 64");
+  return static_cast<int>(k);
+}
+
+std::string optional_path(const po::variables_map& v, const char* name) {
+  return v.count(name) ? v[name].as<std::string>() : std::string();
+}
+
+void print_summary(const Mission& m, const std::string& output) {
+  std::printf("wrote %s: %zu samples over %g s, %zu GPS fixes, %zu marks, %d mines\n", output.c_str(), m.size(),
+              m.time.back() - m.time.front(), m.gps_time.size(), m.mark_count(), m.mine_count);
+}
+
+int import_marks(std::span<const std::string> args) {
+  po::options_description options("import marks options");
+  options.add_options()
+      ("marks", po::value<std::string>()->required(), "marks CSV: time,mine,range,side")
+      ("into", po::value<std::string>()->required(), "mission file whose mark table is replaced")
+      ("mines", po::value<std::string>(), "number of mines K (default: the mission's)")
+      ("output,o", po::value<std::string>()->required(), "mission file to write");
+  po::positional_options_description positional;
+  positional.add("marks", 1);
+  po::variables_map v;
+  if (!parse_options(args, options, positional, v, "gesmi import marks FILE.csv --into MISSION.h5 [--mines K] -o OUT.h5"))
+    return kExitOk;
+  const std::string output = v["output"].as<std::string>();
+  io::check_writable_target(output);
+  const std::optional<int> mines = parse_mines(v);
+  Mission m = io::read_mission(v["into"].as<std::string>());
+  io::import_marks(m, v["marks"].as<std::string>(), mines);
+  io::write_mission(m, output);
+  print_summary(m, output);
+  return kExitOk;
+}
+
+int import_nav(std::span<const std::string> args) {
+  po::options_description options("import nav options");
+  options.add_options()
+      ("nav", po::value<std::string>()->required(), "navigation CSV: time,roll,pitch,heading,vx,vy,vz,altitude,depth")
+      ("gps", po::value<std::string>(), "GPS CSV: time,longitude,latitude")
+      ("marks", po::value<std::string>(), "marks CSV: time,mine,range,side")
+      ("origin", po::value<std::string>(), "local frame origin LAT,LON in degrees (default: the first GPS fix)")
+      ("config", po::value<std::string>(), "sensor model YAML over the reference defaults")
+      ("mines", po::value<std::string>(), "number of mines K (default: the rows of --truth-mines, else 0)")
+      ("truth", po::value<std::string>(), "truth.csv: time,north,east,down (simulated missions)")
+      ("truth-mines", po::value<std::string>(), "truth_mines.csv: mine,north,east,down")
+      ("output,o", po::value<std::string>()->required(), "mission file to write");
+  po::positional_options_description positional;
+  positional.add("nav", 1);
+  po::variables_map v;
+  if (!parse_options(args, options, positional, v,
+                     "gesmi import nav FILE.csv [--gps GPS.csv] [--marks MARKS.csv] [--origin LAT,LON] "
+                     "[--config bounds.yaml] [--mines K] [--truth truth.csv] [--truth-mines truth_mines.csv] -o OUT.h5"))
+    return kExitOk;
+  const std::string output = v["output"].as<std::string>();
+  io::check_writable_target(output);
+  io::ImportInputs inputs;
+  inputs.gps = optional_path(v, "gps");
+  inputs.marks = optional_path(v, "marks");
+  inputs.config = optional_path(v, "config");
+  inputs.truth = optional_path(v, "truth");
+  inputs.truth_mines = optional_path(v, "truth-mines");
+  if (v.count("origin")) inputs.origin = parse_origin(v["origin"].as<std::string>());
+  inputs.mines = parse_mines(v);
+  const Mission m = io::import_nav(v["nav"].as<std::string>(), inputs);
+  io::write_mission(m, output);
+  print_summary(m, output);
+  return kExitOk;
+}
+
+int import_gesmi_txt(std::span<const std::string> args) {
+  po::options_description options("import gesmi-txt options");
+  options.add_options()
+      ("log", po::value<std::string>()->required(), "GESMI text log (rows of 21 numbers)")
+      ("origin", po::value<std::string>(), "geodetic origin LAT,LON of the log's x/y frame (default: the Redermor start fix)")
+      ("config", po::value<std::string>(), "sensor model YAML over the reference defaults")
+      ("xy", po::value<std::string>()->default_value("fixes"), "x/y columns: fixes (rows with half-widths) or truth")
+      ("marks", po::value<std::string>(), "marks CSV: time,mine,range,side")
+      ("mines", po::value<std::string>(), "number of mines K (default 0)")
+      ("output,o", po::value<std::string>()->required(), "mission file to write");
+  po::positional_options_description positional;
+  positional.add("log", 1);
+  po::variables_map v;
+  if (!parse_options(args, options, positional, v,
+                     "gesmi import gesmi-txt FILE [--origin LAT,LON] [--config bounds.yaml] [--xy fixes|truth] "
+                     "[--marks MARKS.csv] [--mines K] -o OUT.h5"))
+    return kExitOk;
+  const std::string xy = v["xy"].as<std::string>();
+  if (xy != "fixes" && xy != "truth") throw UsageError("--xy: expected fixes or truth, got '" + xy + "'");
+  const std::string output = v["output"].as<std::string>();
+  io::check_writable_target(output);
+  io::ImportInputs inputs;
+  inputs.marks = optional_path(v, "marks");
+  inputs.config = optional_path(v, "config");
+  if (v.count("origin")) inputs.origin = parse_origin(v["origin"].as<std::string>());
+  inputs.mines = parse_mines(v);
+  const Mission m = io::import_gesmi_txt(v["log"].as<std::string>(), xy == "fixes" ? io::GesmiXy::fixes : io::GesmiXy::truth, inputs);
+  io::write_mission(m, output);
+  print_summary(m, output);
+  return kExitOk;
+}
+
+int run_import(std::span<const std::string> args) {
+  if (args.empty()) throw UsageError("expected marks, nav or gesmi-txt (gesmi import nav --help)");
+  const std::string kind = args[0];
+  if (kind == "marks") return import_marks(args.subspan(1));
+  if (kind == "nav") return import_nav(args.subspan(1));
+  if (kind == "gesmi-txt") return import_gesmi_txt(args.subspan(1));
+  if (kind == "--help" || kind == "-h") {
+    std::printf("usage: gesmi import marks|nav|gesmi-txt ... ('gesmi import nav --help'; formats in docs/formats.md)\n");
+    return kExitOk;
+  }
+  throw UsageError("unknown kind '" + kind + "': expected marks, nav or gesmi-txt");
+}
+
+const bool registered = register_command({"import", "make or update a mission from CSV or GESMI text files", run_import});
+
+}  // namespace
+}  // namespace gesmi::cli
