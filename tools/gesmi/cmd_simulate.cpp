@@ -5,6 +5,7 @@
 #include "io/atomic_output.h"
 #include "io/geodesy.h"
 #include "io/mission_file.h"
+#include "io/sensor_model_yaml.h"
 #include "solver/sim/simulator.h"
 #include "tools/gesmi/cli_args.h"
 
@@ -15,7 +16,7 @@ namespace po = boost::program_options;
 
 constexpr const char* kUsage =
     "gesmi simulate --preset redermor --seed S -o MISSION.h5 [--errors uniform|worst-case] [--duration T] "
-    "[--rate HZ] [--mines K] [--missed P] [--unassociated P] [--outliers N]";
+    "[--rate HZ] [--mines K] [--missed P] [--unassociated P] [--outliers N] [--config bounds.yaml]";
 
 int run_simulate(std::span<const std::string> args) {
   po::options_description options("simulate options");
@@ -29,7 +30,8 @@ int run_simulate(std::span<const std::string> args) {
       ("mines", po::value<std::string>()->default_value("6"), "number of mines (0..64)")
       ("missed", po::value<std::string>()->default_value("0"), "probability that a detection is missed")
       ("unassociated", po::value<std::string>()->default_value("0"), "probability that a mark has no mine number")
-      ("outliers", po::value<std::string>()->default_value("0"), "number of corrupted marks");
+      ("outliers", po::value<std::string>()->default_value("0"), "number of corrupted marks")
+      ("config", po::value<std::string>(), "sensor bounds (YAML) the errors are drawn from, stored with the mission");
   po::variables_map v;
   if (!parse_options(args, options, {}, v, kUsage)) return kExitOk;
   if (v["preset"].as<std::string>() != "redermor")
@@ -55,7 +57,9 @@ int run_simulate(std::span<const std::string> args) {
   const std::string output = v["output"].as<std::string>();
   io::check_writable_target(output);
 
-  Mission mission = simulate_mission(o);
+  SensorModel model;
+  if (v.count("config")) io::merge_sensor_model_yaml(v["config"].as<std::string>(), model);
+  Mission mission = simulate_mission(o, model);
   mission.origin = {48.212920614, -4.458227931};  // the reference start fix
   io::set_geodetic_gps(mission);
   io::write_mission(mission, output);
