@@ -1,0 +1,177 @@
+// Every reader of gesmi import / export / solve refuses bad input through the
+// binary with exit code 2, one line on stderr naming the file, the line or
+// dataset, the field and the reason, and writes nothing: the output path does not
+// exist afterwards and no temporary file is left beside it.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "tests/support/run_command.h"
+
+namespace gesmi::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kNavHeader = "time,roll,pitch,heading,vx,vy,vz,altitude,depth\n";
+const std::string kNav = kNavHeader + "0,0,0,0,1.5,0,0,12,5\n0.1,0,0,0,1.5,0,0,12,5\n0.2,0,0,0,1.5,0,0,12,5\n";
+const std::string kGps = "time,longitude,latitude\n0,-4.458227931,48.212920614\n0.2,-4.458227,48.212922\n";
+const std::string kMarks = "time,mine,range,side\n0.1,0,20,starboard\n";
+const std::string kTxtRow = " 0 1e-4 0 1e-4 0.5 5e-3 1.5 0.01 0 0.01 0 0.01 5 2.5 12 0.1 nan nan nan nan\n";
+
+struct Case {
+  const char* title;
+  std::map<std::string, std::string> files;  // name -> content, written in the case's folder
+  std::vector<std::string> args;             // "@" is replaced by the folder
+  std::vector<std::string> must_name;        // substrings of the one error line
+};
+
+std::string in_folder(const std::string& arg, const std::string& folder) {
+  std::string out = arg;
+  for (std::size_t at = out.find('@'); at != std::string::npos; at = out.find('@', at + folder.size()))
+    out.replace(at, 1, folder);
+  return out;
+}
+
+// A short simulated mission shared by the HDF5 cases, and a truncated copy.
+const std::string& simulated_mission() {
+  static const std::string path = [] {
+    const std::string p = temp_folder("bad-input-mission") + "/sim.h5";
+    const CommandResult r = run_gesmi({"simulate", "--seed", "2", "--duration", "600", "-o", p});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    fs::copy_file(p, p + ".truncated.h5");
+    fs::resize_file(p + ".truncated.h5", fs::file_size(p) / 3);
+    return p;
+  }();
+  return path;
+}
+
+void run_case(const Case& c, const std::string& output_name = "out.h5") {  // "-o" in c.args overrides
+  SCOPED_TRACE(c.title);
+  const std::string folder = temp_folder("bad-input");
+  for (const auto& [name, content] : c.files) std::ofstream(folder + "/" + name, std::ios::binary) << content;
+  std::vector<std::string> args;
+  for (const std::string& a : c.args) args.push_back(in_folder(a, folder));
+  if (std::find(args.begin(), args.end(), "-o") == args.end()) {
+    args.push_back("-o");
+    args.push_back(folder + "/" + output_name);
+  }
+  const CommandResult r = run_gesmi(args);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  for (const std::string& s : c.must_name) EXPECT_NE(r.err.find(in_folder(s, folder)), std::string::npos) << "wanted '" << s << "' in: " << r.err;
+  // Nothing written: only the inputs are in the folder.
+  for (const auto& entry : fs::directory_iterator(folder))
+    EXPECT_TRUE(c.files.count(entry.path().filename().string())) << "left behind: " << entry.path();
+}
+
+TEST(BadInput, ImportNavNamesFileLineFieldAndReason) {
+  const Case cases[] = {
+      {"empty nav", {{"nav.csv", ""}}, {"import", "nav", "@/nav.csv", "--origin", "48,-4"}, {"@/nav.csv:1: header: the file is empty"}},
+      {"missing nav file", {}, {"import", "nav", "@/nav.csv", "--origin", "48,-4"}, {"@/nav.csv: cannot open the file"}},
+      {"wrong header", {{"nav.csv", "t,roll\n"}}, {"import", "nav", "@/nav.csv", "--origin", "48,-4"}, {"@/nav.csv:1: header: expected 'time,roll,pitch"}},
+      {"missing column", {{"nav.csv", kNavHeader + "0,0,0,0,1.5,0,0,12,5\n0.1,0,0,0,1.5,0,0,12\n"}}, {"import", "nav", "@/nav.csv", "--origin", "48,-4"},
+       {"@/nav.csv:3: depth: missing column"}},
+      {"not a number", {{"nav.csv", kNavHeader + "0,0,0,0,1.5,0,0,12,5\n0.1,0,0,north,1.5,0,0,12,5\n"}}, {"import", "nav", "@/nav.csv", "--origin", "48,-4"},
+       {"@/nav.csv:3: heading: expected a number, found 'north'"}},
+      {"NaN", {{"nav.csv", kNavHeader + "0,0,0,0,1.5,0,0,12,5\n0.1,0,nan,0,1.5,0,0,12,5\n"}}, {"import", "nav", "@/nav.csv", "--origin", "48,-4"},
+       {"@/nav.csv:3: pitch: is NaN"}},
+      {"Inf", {{"nav.csv", kNavHeader + "0,0,0,0,1.5,0,0,12,5\n0.1,0,0,0,1.5,-inf,0,12,5\n"}}, {"import", "nav", "@/nav.csv", "--origin", "48,-4"},
+       {"@/nav.csv:3: vy: is infinite"}},
+      {"time goes back", {{"nav.csv", kNav + "0.15,0,0,0,1.5,0,0,12,5\n"}}, {"import", "nav", "@/nav.csv", "--origin", "48,-4"},
+       {"@/nav.csv:5: time: 0.15 s does not increase (0.2 s on line 4)"}},
+      {"no origin", {{"nav.csv", kNav}}, {"import", "nav", "@/nav.csv"}, {"give --origin LAT,LON"}},
+      {"bad origin", {{"nav.csv", kNav}}, {"import", "nav", "@/nav.csv", "--origin", "48"}, {"--origin: expected LAT,LON"}},
+      {"origin at the pole", {{"nav.csv", kNav}}, {"import", "nav", "@/nav.csv", "--origin", "90,0"}, {"--origin: latitude must be in [-89, 89]"}},
+      {"empty gps", {{"nav.csv", kNav}, {"gps.csv", ""}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv"}, {"@/gps.csv:1: header: the file is empty"}},
+      {"gps after the end", {{"nav.csv", kNav}, {"gps.csv", "time,longitude,latitude\n0.3,-4.4,48.2\n"}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv"},
+       {"@/gps.csv:2: time: 0.3 s is outside the mission [0, 0.2] s"}},
+      {"gps far away", {{"nav.csv", kNav}, {"gps.csv", kGps}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--origin", "48.4,-4.458"},
+       {"@/gps.csv:2: longitude, latitude: the fix is", "beyond the 10000 m zone"}},
+      {"gps missing latitude", {{"nav.csv", kNav}, {"gps.csv", "time,longitude,latitude\n0,-4.4\n"}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv"},
+       {"@/gps.csv:2: latitude: missing column"}},
+      {"empty marks", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"marks.csv", ""}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--marks", "@/marks.csv", "--mines", "1"},
+       {"@/marks.csv:1: header: the file is empty"}},
+      {"mark outside the mission", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"marks.csv", "time,mine,range,side\n5,0,20,port\n"}},
+       {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--marks", "@/marks.csv", "--mines", "1"}, {"@/marks.csv:2: time: 5 s is outside the mission [0, 0.2] s"}},
+      {"unknown side", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"marks.csv", "time,mine,range,side\n0.1,0,20,left\n"}},
+       {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--marks", "@/marks.csv", "--mines", "1"}, {"@/marks.csv:2: side: expected starboard, port, +1 or -1, found 'left'"}},
+      {"unknown mine", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"marks.csv", kMarks}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--marks", "@/marks.csv"},
+       {"@/marks.csv:2: mine: unknown mine 0: the mission has no mines"}},
+      {"range beyond the sonar", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"marks.csv", "time,mine,range,side\n0.1,?,90,starboard\n"}},
+       {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--marks", "@/marks.csv"}, {"@/marks.csv:2: range: 90 m is beyond the sonar's maximum range"}},
+      {"mark row short", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"marks.csv", "time,mine,range,side\n0.1,?,20\n"}},
+       {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--marks", "@/marks.csv"}, {"@/marks.csv:2: side: missing column"}},
+      {"unknown YAML key", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"bounds.yaml", "heading: 0.01\nspeed_of_sound: 1500\n"}},
+       {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--config", "@/bounds.yaml"}, {"@/bounds.yaml: line 2: speed_of_sound: unknown key"}},
+      {"bad YAML value", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"bounds.yaml", "heading: fast\n"}},
+       {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--config", "@/bounds.yaml"}, {"@/bounds.yaml: line 1: heading: expected a number"}},
+      {"truth rows", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"truth.csv", "time,north,east,down\n0,0,0,5\n"}},
+       {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--truth", "@/truth.csv"}, {"@/truth.csv:2: expected 3 rows (one per navigation sample), found 1"}},
+      {"mines out of range", {{"nav.csv", kNav}, {"gps.csv", kGps}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--mines", "65"}, {"--mines: must be between 0 and 64"}},
+      {"output folder missing", {{"nav.csv", kNav}, {"gps.csv", kGps}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "-o", "@/no/such/folder/out.h5"},
+       {"folder @/no/such/folder does not exist"}},
+  };
+  for (const Case& c : cases) run_case(c);
+}
+
+TEST(BadInput, ImportGesmiTxtNamesLineFieldAndReason) {
+  const Case cases[] = {
+      {"empty log", {{"log.txt", ""}}, {"import", "gesmi-txt", "@/log.txt"}, {"@/log.txt:1: no data row (rows of 21 numbers"}},
+      {"only headers", {{"log.txt", "Redermor\nt phi dphi\n"}}, {"import", "gesmi-txt", "@/log.txt"}, {"@/log.txt:2: no data row"}},
+      {"short row", {{"log.txt", "header\n0" + kTxtRow + "0.1 0 1e-4 0 1e-4\n"}}, {"import", "gesmi-txt", "@/log.txt"},
+       {"@/log.txt:3: expected 21 numbers", "found 5 fields"}},
+      {"NaN value", {{"log.txt", "0" + kTxtRow + "0.1 0 1e-4 nan 1e-4 0.5 5e-3 1.5 0.01 0 0.01 0 0.01 5 2.5 12 0.1 nan nan nan nan\n"}},
+       {"import", "gesmi-txt", "@/log.txt"}, {"@/log.txt:2: pitch: is NaN"}},
+      {"time goes back", {{"log.txt", "1" + kTxtRow + "0.5" + kTxtRow}}, {"import", "gesmi-txt", "@/log.txt"}, {"@/log.txt:2: t: 0.5 s does not increase (1 s on line 1)"}},
+      {"word in a row", {{"log.txt", "0" + kTxtRow + "0.1 0 1e-4 0 1e-4 0.5 5e-3 fast 0.01 0 0.01 0 0.01 5 2.5 12 0.1 nan nan nan nan\n"}},
+       {"import", "gesmi-txt", "@/log.txt"}, {"@/log.txt:2: vx: expected a number, found 'fast'"}},
+      {"unknown xy reading", {{"log.txt", "0" + kTxtRow + "0.1" + kTxtRow}}, {"import", "gesmi-txt", "@/log.txt", "--xy", "both"}, {"--xy: expected fixes or truth"}},
+      {"truth needs x", {{"log.txt", "0" + kTxtRow + "0.1" + kTxtRow}}, {"import", "gesmi-txt", "@/log.txt", "--xy", "truth"}, {"@/log.txt:1: x: needed as ground truth, found nan"}},
+  };
+  for (const Case& c : cases) run_case(c);
+}
+
+TEST(BadInput, ImportMarksChecksEveryRowAgainstTheMission) {
+  const std::string mission = simulated_mission();
+  const Case cases[] = {
+      {"outside the mission", {{"marks.csv", "time,mine,range,side\n601,0,20,port\n"}}, {"import", "marks", "@/marks.csv", "--into", mission},
+       {"@/marks.csv:2: time: 601 s is outside the mission [0, 600] s"}},
+      {"unknown mine", {{"marks.csv", "time,mine,range,side\n10,6,20,port\n"}}, {"import", "marks", "@/marks.csv", "--into", mission},
+       {"@/marks.csv:2: mine: unknown mine 6: the mission's mines are 0..5"}},
+      {"unknown side", {{"marks.csv", "time,mine,range,side\n10,?,20,up\n"}}, {"import", "marks", "@/marks.csv", "--into", mission}, {"@/marks.csv:2: side: expected starboard"}},
+      {"negative range", {{"marks.csv", "time,mine,range,side\n10,?,-3,port\n"}}, {"import", "marks", "@/marks.csv", "--into", mission}, {"@/marks.csv:2: range: -3 m is negative"}},
+      {"empty file", {{"marks.csv", ""}}, {"import", "marks", "@/marks.csv", "--into", mission}, {"@/marks.csv:1: header: the file is empty"}},
+      {"mines against the truth", {{"marks.csv", kMarks}}, {"import", "marks", "@/marks.csv", "--into", mission, "--mines", "8"},
+       {"--mines: 8 differs from the 6 mines of the mission's truth"}},
+      {"truncated mission", {{"marks.csv", kMarks}}, {"import", "marks", "@/marks.csv", "--into", mission + ".truncated.h5"}, {mission + ".truncated.h5: ", "truncated"}},
+      {"missing mission", {{"marks.csv", kMarks}}, {"import", "marks", "@/marks.csv", "--into", "@/none.h5"}, {"@/none.h5: cannot open the file"}},
+  };
+  for (const Case& c : cases) run_case(c);
+}
+
+TEST(BadInput, TruncatedOrForeignHdf5IsRefusedBySolveAndExport) {
+  const std::string mission = simulated_mission();
+  const Case cases[] = {
+      {"solve truncated", {}, {"solve", mission + ".truncated.h5"}, {mission + ".truncated.h5: ", "truncated"}},
+      {"solve empty file", {{"empty.h5", ""}}, {"solve", "@/empty.h5"}, {"@/empty.h5: not an HDF5 file"}},
+      {"solve a text file", {{"nav.h5", kNav}}, {"solve", "@/nav.h5"}, {"@/nav.h5: not an HDF5 file"}},
+  };
+  for (const Case& c : cases) run_case(c);
+  const Case exports[] = {
+      {"export truncated", {}, {"export", mission + ".truncated.h5"}, {mission + ".truncated.h5: ", "truncated"}},
+      {"export missing", {}, {"export", "@/none.h5"}, {"@/none.h5: cannot open the file"}},
+      {"export a text file as gesmi-txt", {{"nav.h5", kNav}}, {"export", "@/nav.h5", "--format", "gesmi-txt"}, {"@/nav.h5: not an HDF5 file"}},
+      {"unknown format", {}, {"export", mission, "--format", "json"}, {"--format: expected csv or gesmi-txt"}},
+  };
+  for (const Case& c : exports) run_case(c, "csv");
+  // A folder that is not empty is refused before anything is read.
+  run_case({"export into a full folder", {{"keep.txt", "x"}}, {"export", mission, "-o", "@"}, {"the folder exists and is not empty"}});
+}
+
+}  // namespace
+}  // namespace gesmi::test
