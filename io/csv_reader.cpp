@@ -54,6 +54,8 @@ const std::vector<std::string>& CsvReader::read_header(std::initializer_list<std
     line_ = std::max<std::size_t>(line_, 1);
     fail_line("header: the file is empty (expected the header '" + expected + "')");
   }
+  // A UTF-8 byte order mark (spreadsheet exports) is not part of the first name.
+  if (line_ == 1 && line_text_.rfind("\xEF\xBB\xBF", 0) == 0) line_text_.erase(0, 3);
   split(line_text_, fields_);
   bool ok = fields_.size() >= required.size() && std::equal(required.begin(), required.end(), fields_.begin());
   for (std::size_t i = required.size(); ok && i < fields_.size(); ++i) {

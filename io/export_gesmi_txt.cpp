@@ -1,8 +1,10 @@
 #include "io/export_gesmi_txt.h"
 
 #include <algorithm>
+#include <fstream>
 #include <string>
 
+#include "io/atomic_output.h"
 #include "io/csv_number.h"
 #include "io/format_error.h"
 #include "io/import_gesmi_txt.h"
@@ -54,6 +56,17 @@ void write_gesmi_txt(const Mission& m, std::ostream& out) {
     line += '\n';
     out << line;
   }
+}
+
+void export_gesmi_txt(const Mission& mission, const std::string& path) {
+  AtomicOutput out(path);
+  {
+    std::ofstream file(out.temp_path(), std::ios::binary);
+    write_gesmi_txt(mission, file);
+    file.flush();
+    if (!file) throw FormatError(path + ": cannot write (disk full?)");
+  }
+  out.commit();
 }
 
 }  // namespace gesmi::io

@@ -7,6 +7,7 @@
 // elsewhere. Marks, mines and truth are not part of the format.
 
 #include <ostream>
+#include <string>
 
 #include "solver/mission/mission.h"
 
@@ -15,5 +16,8 @@ namespace gesmi::io {
 /// Writes the log; the mission's GPS fixes must be in the local frame (as
 /// read_mission leaves them) and each at a sample time, else FormatError.
 void write_gesmi_txt(const Mission& mission, std::ostream& out);
+
+/// The same into a file, atomically (temporary name, then rename).
+void export_gesmi_txt(const Mission& mission, const std::string& path);
 
 }  // namespace gesmi::io

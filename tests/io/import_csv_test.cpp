@@ -92,6 +92,10 @@ TEST(NavCsv, ReadsColumnsAndOptionalHalfWidths) {
   EXPECT_TRUE(log.half_widths.vx.empty());
 }
 
+TEST(NavCsv, IgnoresAByteOrderMark) {
+  EXPECT_EQ(nav("\xEF\xBB\xBF" + kNavHeader + "0,0,0,0,1,0,0,10,5\n1,0,0,0,1,0,0,10,5\n").time.size(), 2u);
+}
+
 TEST(NavCsv, NamesLineFieldAndReasonOfEveryBadRow) {
   const std::string row0 = "0,0,0,0,1,0,0,10,5\n";
   const struct {

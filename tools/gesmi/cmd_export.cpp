@@ -2,12 +2,10 @@
 // or to a GESMI text log.
 
 #include <cstdio>
-#include <fstream>
 
 #include "io/atomic_output.h"
 #include "io/export_csv.h"
 #include "io/export_gesmi_txt.h"
-#include "io/format_error.h"
 #include "io/mission_file.h"
 #include "tools/gesmi/cli_args.h"
 
@@ -36,19 +34,12 @@ int run_export(std::span<const std::string> args) {
   const Mission m = io::read_mission(v["mission"].as<std::string>());
   if (format == "csv") {
     io::export_mission_csv(m, output);
-    std::printf("wrote %s/: nav.csv (%zu rows), gps.csv (%zu), marks.csv (%zu)%s, model.yaml, import-command.txt\n",
-                output.c_str(), m.size(), m.gps_time.size(), m.mark_count(),
-                m.has_truth() ? ", truth.csv, truth_mines.csv" : "");
+    std::printf("wrote %s/: nav.csv (%zu rows), gps.csv (%zu), marks.csv (%zu)%s%s, model.yaml, import-command.txt\n",
+                output.c_str(), m.size(), m.gps_time.size(), m.mark_count(), m.has_truth() ? ", truth.csv" : "",
+                m.truth_mines.empty() ? "" : ", truth_mines.csv");
     return kExitOk;
   }
-  io::AtomicOutput out(output);
-  {
-    std::ofstream file(out.temp_path(), std::ios::binary);
-    io::write_gesmi_txt(m, file);
-    file.flush();
-    if (!file) throw io::FormatError(output + ": cannot write (disk full?)");
-  }
-  out.commit();
+  io::export_gesmi_txt(m, output);
   std::printf("wrote %s: %zu rows, %zu position fixes (marks are not part of the GESMI text format)\n", output.c_str(),
               m.size(), m.gps_time.size());
   return kExitOk;
