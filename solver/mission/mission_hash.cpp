@@ -37,7 +37,7 @@ class Fnv1a {
 std::string navigation_hash(const Mission& m) {
   Fnv1a h;
   for (const auto* v : {&m.time, &m.roll, &m.pitch, &m.heading, &m.vx, &m.vy, &m.vz, &m.altitude, &m.depth, &m.gps_time,
-                        &m.gps_longitude, &m.gps_latitude})
+                        &m.gps_longitude, &m.gps_latitude, &m.gps_given_north_halfwidth, &m.gps_given_east_halfwidth})
     h.add(*v);
   for (const auto* v : {&m.half_widths.roll, &m.half_widths.pitch, &m.half_widths.heading, &m.half_widths.vx,
                         &m.half_widths.vy, &m.half_widths.vz, &m.half_widths.depth, &m.half_widths.altitude})

@@ -13,6 +13,9 @@
 
 namespace gesmi {
 
+/// Relative widening of the DVL speed for the local frame's scale (see velocity()).
+inline constexpr double kFrameScaleMargin = 2e-5;
+
 class SensorBoxes {
  public:
   /// The mission must outlive this object (it reads the mission's arrays).
