@@ -11,7 +11,7 @@ namespace gesmi::io {
 void write_kalman_result(const KalmanFile& k, const std::string& path) {
   AtomicOutput out(path);
   {
-    H5File f = H5File::create(out.temp_path());
+    H5File f = H5File::create(out.temp_path(), out.final_path());
     const KalmanResult& r = k.result;
     f.write("/time", k.time, k.time.size());
     f.write("/kalman/mean", r.mean, r.steps, 3, 2);

@@ -43,7 +43,7 @@ void write_localization_hdf5(const std::string& path, const LocalizationProblem&
     for (std::size_t i : h.outliers.outliers) outliers[k * n + i] = 1;
   }
   AtomicOutput out(path);
-  H5File file = H5File::create(out.temp_path());
+  H5File file = H5File::create(out.temp_path(), out.final_path());
   write_paving(file, "/inner", r.paving.inner, inner);
   write_paving(file, "/boundary", r.paving.boundary, boundary);
   file.write("/components/hull", hull, count, 6, 2);

@@ -6,6 +6,7 @@
 #include "io/format_error.h"
 #include "io/geodesy.h"
 #include "io/hdf5/h5_file.h"
+#include "io/hdf5/h5_format.h"
 #include "io/sensor_model_attributes.h"
 #include "io/sonar_side.h"
 #include "solver/network/mission_network.h"
@@ -14,7 +15,7 @@ namespace gesmi::io {
 namespace {
 
 constexpr const char* kFormat = "gesmi-mission";
-constexpr std::int64_t kFormatVersion = 1;
+constexpr H5FormatVersions kVersions{.current = 1, .oldest = 1, .when_absent = 0};
 
 const char* const kHalfWidthNames[] = {"roll", "pitch", "heading", "vx", "vy", "vz", "depth", "altitude"};
 
@@ -83,6 +84,9 @@ void validate_mission(const Mission& m, const std::string& source) {
   expect_size(m.gps_longitude.size(), g, source, "/gps/lonlat");
   expect_finite(m.gps_time, source, "/gps/time", "time");
   for (std::size_t i = 0; i < g; ++i) {
+    if (i > 0 && !(m.gps_time[i] > m.gps_time[i - 1]))
+      bad(source, "/gps/time", row_text(i) + ": fix times must increase (" + std::to_string(m.gps_time[i]) + " after " +
+                                   std::to_string(m.gps_time[i - 1]) + ")");
     if (m.gps_time[i] < m.time.front() || m.gps_time[i] > m.time.back())
       bad(source, "/gps/time", row_text(i) + ": fix time " + std::to_string(m.gps_time[i]) + " s is outside the mission");
     if (!std::isfinite(m.gps_latitude[i]) || std::fabs(m.gps_latitude[i]) > 90.0)
@@ -122,22 +126,37 @@ void validate_mission(const Mission& m, const std::string& source) {
   }
 
   // Truth.
-  if (!m.truth_x.empty()) {
+  if (!m.truth_x.empty() || !m.truth_y.empty() || !m.truth_z.empty()) {
     expect_size(m.truth_x.size(), n, source, "/truth/position");
     expect_size(m.truth_y.size(), n, source, "/truth/position");
     expect_size(m.truth_z.size(), n, source, "/truth/position");
+    for (const auto* axis : {&m.truth_x, &m.truth_y, &m.truth_z}) expect_finite(*axis, source, "/truth/position", "position");
   }
-  if (!m.truth_mines.empty()) expect_size(m.truth_mines.size(), 3 * static_cast<std::size_t>(m.mine_count), source, "/truth/mines (K x 3)");
-  if (!m.truth_marks_outlier.empty()) expect_size(m.truth_marks_outlier.size(), mk, source, "/truth/marks_outlier");
-  if (!m.truth_marks_mine.empty()) expect_size(m.truth_marks_mine.size(), mk, source, "/truth/marks_mine");
-  if (!m.truth_gps_outlier.empty()) expect_size(m.truth_gps_outlier.size(), g, source, "/truth/gps_outlier");
+  if (!m.truth_mines.empty()) {
+    expect_size(m.truth_mines.size(), 3 * static_cast<std::size_t>(m.mine_count), source, "/truth/mines (K x 3)");
+    expect_finite(m.truth_mines, source, "/truth/mines", "position");
+  }
+  if (m.truth_missed_marks.size() % 3 != 0) bad(source, "/truth/missed_marks", "expected X x 3 values");
+  expect_finite(m.truth_missed_marks, source, "/truth/missed_marks", "value");
+  const auto expect_flags = [&](const std::vector<std::int32_t>& flags, std::size_t rows, const char* dataset) {
+    expect_size(flags.size(), rows, source, dataset);
+    for (std::size_t i = 0; i < flags.size(); ++i)
+      if (flags[i] != 0 && flags[i] != 1) bad(source, dataset, row_text(i) + ": expected 0 or 1");
+  };
+  if (!m.truth_marks_outlier.empty()) expect_flags(m.truth_marks_outlier, mk, "/truth/marks_outlier");
+  if (!m.truth_gps_outlier.empty()) expect_flags(m.truth_gps_outlier, g, "/truth/gps_outlier");
+  if (!m.truth_marks_mine.empty()) {
+    expect_size(m.truth_marks_mine.size(), mk, source, "/truth/marks_mine");
+    for (std::size_t j = 0; j < mk; ++j)
+      if (m.truth_marks_mine[j] < -1 || m.truth_marks_mine[j] >= m.mine_count)
+        bad(source, "/truth/marks_mine", row_text(j) + ": not one of the mission's mines");
+  }
 }
 
 Mission read_mission(const std::string& path) {
   const H5File f = H5File::open_read(path);
   Mission m;
-  if (f.string_attribute("/", "format") != std::optional<std::string>(kFormat))
-    throw FormatError(path + ": not a gesmi mission file (attribute 'format' is not '" + kFormat + "')");
+  check_format(f, kFormat, "gesmi mission", kVersions);
   const auto required_double = [&](const std::string& object, const std::string& name) {
     const auto v = f.double_attribute(object, name);
     if (!v) throw FormatError(path + ": " + object + ": missing attribute " + name);
@@ -149,6 +168,7 @@ Mission read_mission(const std::string& path) {
   if (!mines) throw FormatError(path + ": /: missing attribute mine_count");
   if (*mines < 0 || *mines > kMaxMines) throw FormatError(path + ": /: mine_count must be between 0 and 64");
   m.mine_count = static_cast<int>(*mines);
+  if (!f.has_group("/model")) throw FormatError(path + ": /model: missing group (the sensor model)");
   for (const ModelField& field : model_fields()) m.model.*field.member = required_double("/model", std::string(field.key));
   const auto side = f.string_attribute("/model", "sonar_side");
   if (!side) throw FormatError(path + ": /model: missing attribute sonar_side");
@@ -177,7 +197,15 @@ Mission read_mission(const std::string& path) {
     const std::string name = std::string("/nav/half_widths/") + kHalfWidthNames[i];
     if (f.has(name)) *half_width(m.half_widths, i) = f.read_doubles(name);
   }
-  if (f.has("/gps/time")) {
+  // Optional groups: absent, or complete.
+  const auto require_all = [&](const std::string& group, std::initializer_list<const char*> datasets) {
+    if (!f.has_group(group)) return false;
+    for (const char* name : datasets)
+      if (!f.has(group + "/" + name))
+        throw FormatError(path + ": " + group + "/" + name + ": missing dataset (the " + group + " group needs it)");
+    return true;
+  };
+  if (require_all("/gps", {"time", "lonlat"})) {
     m.gps_time = f.read_doubles("/gps/time");
     const H5Shape s = f.shape("/gps/lonlat");
     if (s.rank != 2 || s.columns != 2 || s.rows != m.gps_time.size())
@@ -196,7 +224,7 @@ Mission read_mission(const std::string& path) {
       f.read_column_into("/gps/halfwidth", 1, m.gps_given_east_halfwidth);
     }
   }
-  if (f.has("/marks/time")) {
+  if (require_all("/marks", {"time", "mine", "range", "side"})) {
     m.mark_time = f.read_doubles("/marks/time");
     m.mark_mine = f.read_ints("/marks/mine");
     m.mark_range = f.read_doubles("/marks/range");
@@ -220,7 +248,7 @@ void write_mission(const Mission& m, const std::string& path) {
   validate_mission(m, path);
   AtomicOutput out(path);
   {
-    H5File f = H5File::create(out.temp_path());
+    H5File f = H5File::create(out.temp_path(), path);
     const std::size_t n = m.size();
     const auto interleave = [&](const std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& c) {
       std::vector<double> rows(3 * a.size());
@@ -268,8 +296,7 @@ void write_mission(const Mission& m, const std::string& path) {
     if (!m.truth_marks_outlier.empty()) f.write("/truth/marks_outlier", m.truth_marks_outlier, mk);
     if (!m.truth_marks_mine.empty()) f.write("/truth/marks_mine", m.truth_marks_mine, mk);
     if (!m.truth_gps_outlier.empty()) f.write("/truth/gps_outlier", m.truth_gps_outlier, g);
-    f.set_attribute("/", "format", std::string(kFormat));
-    f.set_attribute("/", "format_version", kFormatVersion);
+    write_format(f, kFormat, kVersions);
     f.set_attribute("/", "origin_latitude", m.origin.latitude);
     f.set_attribute("/", "origin_longitude", m.origin.longitude);
     f.set_attribute("/", "mine_count", static_cast<std::int64_t>(m.mine_count));

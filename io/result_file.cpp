@@ -1,15 +1,42 @@
 #include "io/result_file.h"
 
 #include <cmath>
+#include <limits>
 
 #include "io/atomic_output.h"
 #include "io/format_error.h"
+#include "io/hdf5/h5_digest.h"
 #include "io/hdf5/h5_file.h"
+#include "io/hdf5/h5_format.h"
+#include "solver/network/mission_network.h"
 
 namespace gesmi::io {
 namespace {
 
 constexpr const char* kFormat = "gesmi-result";
+// 1: before digests (no format_version attribute); 2: per-dataset and root SHA-256.
+constexpr H5FormatVersions kVersions{.current = 2, .oldest = 1, .when_absent = 1};
+
+// Every dataset of a result, in the order the root digest lists them.
+const char* const kDatasets[] = {"/time",          "/tube/lower",       "/tube/upper",     "/increments/lower",
+                                 "/increments/upper", "/mines/lower",   "/mines/upper",    "/waterfall/lower",
+                                 "/waterfall/upper", "/marks/candidates", "/marks/outlier", "/marks/time",
+                                 "/marks/range",    "/marks/mine",       "/gps/outlier"};
+
+// The root attributes the root digest covers (timings are informative and left out).
+std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& r) {
+  return {{"status", r.consistent ? "consistent" : "inconsistent"},
+          {"inconsistency", r.message},
+          {"sweeps", std::to_string(r.sweeps)},
+          {"converged", std::to_string(int{r.converged})},
+          {"minimal_outliers", std::to_string(r.minimal_outliers)},
+          {"mine_count", std::to_string(r.mine_count)},
+          {"navigation_sha256", r.navigation_digest},
+          {"bounds_sha256", r.bounds_digest},
+          {"marks_sha256", r.marks_digest},
+          {"mark_count", std::to_string(r.mark_count)},
+          {"gesmi_version", r.version}};
+}
 
 // Interval arrays as N x 3 lower / upper datasets (empty bounds as NaN).
 void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interval>* axes[3], std::size_t n) {
@@ -20,22 +47,40 @@ void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interv
       lower[3 * k + c] = x.is_empty() ? NAN : x.lo();
       upper[3 * k + c] = x.is_empty() ? NAN : x.hi();
     }
-  f.write(prefix + "/lower", lower, n, 3, 2);
-  f.write(prefix + "/upper", upper, n, 3, 2);
+  write_digested(f, prefix + "/lower", lower, n, 3, 2);
+  write_digested(f, prefix + "/upper", upper, n, 3, 2);
 }
 
-void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interval>* axes[3], std::size_t n) {
+[[noreturn]] void bad(const H5File& f, const std::string& object, const std::string& reason) {
+  throw FormatError(f.path() + ": " + object + ": " + reason);
+}
+
+// Reads N x 3 bounds; an interval is [lo, hi] with lo <= hi, lo < +inf, hi > -inf,
+// or empty (both NaN).
+void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interval>* axes[3], std::size_t n,
+                 bool verified) {
   std::vector<double> lower(3 * n), upper(3 * n);
   f.read_doubles_into(prefix + "/lower", lower);
   f.read_doubles_into(prefix + "/upper", upper);
+  if (verified) {
+    verify_digest(f, prefix + "/lower", lower, n, 3);
+    verify_digest(f, prefix + "/upper", upper, n, 3);
+  }
   for (std::size_t c = 0; c < 3; ++c) axes[c]->resize(n);
   for (std::size_t k = 0; k < n; ++k)
     for (std::size_t c = 0; c < 3; ++c) {
       const double lo = lower[3 * k + c], hi = upper[3 * k + c];
-      if (std::isnan(lo) != std::isnan(hi) || (!std::isnan(lo) && !(lo <= hi)))
-        throw FormatError(f.path() + ": " + prefix + ": row " + std::to_string(k) + ": lower bound above upper bound");
-      (*axes[c])[k] = std::isnan(lo) ? Interval::empty() : Interval(lo, hi);
+      const bool empty = std::isnan(lo) && std::isnan(hi);
+      if (!empty && !(lo <= hi && lo < INFINITY && hi > -INFINITY))
+        bad(f, prefix, "row " + std::to_string(k) + ": not an interval (lower " + std::to_string(lo) + ", upper " +
+                           std::to_string(hi) + ")");
+      (*axes[c])[k] = empty ? Interval::empty() : Interval(lo, hi);
     }
+}
+
+void expect_flags(const H5File& f, const std::string& dataset, const std::vector<std::int32_t>& values) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (values[i] != 0 && values[i] != 1) bad(f, dataset, "row " + std::to_string(i) + ": expected 0 or 1");
 }
 
 }  // namespace
@@ -43,10 +88,10 @@ void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interva
 void write_result(const SolveResult& r, const std::string& path) {
   AtomicOutput out(path);
   {
-    H5File f = H5File::create(out.temp_path());
+    H5File f = H5File::create(out.temp_path(), out.final_path());
     const TubeDomains& d = r.domains;
     const std::size_t n = d.size();
-    f.write("/time", r.time, r.time.size());
+    write_digested(f, "/time", r.time, r.time.size());
     const std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
     write_bounds(f, "/tube", tube, n);
     const std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
@@ -60,30 +105,33 @@ void write_result(const SolveResult& r, const std::string& path) {
     const std::vector<Interval>* mines[3] = {&mx, &my, &mz};
     write_bounds(f, "/mines", mines, d.mines.size());
     const std::size_t k = static_cast<std::size_t>(r.mine_count);
-    f.write("/waterfall/lower", r.waterfall.lower, r.waterfall.steps, r.waterfall.mines, 2);
-    f.write("/waterfall/upper", r.waterfall.upper, r.waterfall.steps, r.waterfall.mines, 2);
+    write_digested(f, "/waterfall/lower", r.waterfall.lower, r.waterfall.steps, r.waterfall.mines, 2);
+    write_digested(f, "/waterfall/upper", r.waterfall.upper, r.waterfall.steps, r.waterfall.mines, 2);
     std::vector<std::int32_t> candidates(r.candidates.size() * k);
     for (std::size_t j = 0; j < r.candidates.size(); ++j)
       for (std::size_t i = 0; i < k; ++i) candidates[j * k + i] = static_cast<std::int32_t>(r.candidates[j] >> i & 1);
-    f.write("/marks/candidates", candidates, r.candidates.size(), k, 2);
-    f.write("/marks/outlier", r.outlier, r.outlier.size());
-    f.write("/marks/time", r.mark_time, r.mark_time.size());
-    f.write("/marks/range", r.mark_range, r.mark_range.size());
-    f.write("/marks/mine", r.mark_mine, r.mark_mine.size());
-    f.write("/gps/outlier", r.gps_outlier, r.gps_outlier.size());
-    f.set_attribute("/", "format", std::string(kFormat));
+    write_digested(f, "/marks/candidates", candidates, r.candidates.size(), k, 2);
+    write_digested(f, "/marks/outlier", r.outlier, r.outlier.size());
+    write_digested(f, "/marks/time", r.mark_time, r.mark_time.size());
+    write_digested(f, "/marks/range", r.mark_range, r.mark_range.size());
+    write_digested(f, "/marks/mine", r.mark_mine, r.mark_mine.size());
+    write_digested(f, "/gps/outlier", r.gps_outlier, r.gps_outlier.size());
+    write_format(f, kFormat, kVersions);
     f.set_attribute("/", "status", std::string(r.consistent ? "consistent" : "inconsistent"));
     f.set_attribute("/", "inconsistency", r.message);
     f.set_attribute("/", "sweeps", r.sweeps);
     f.set_attribute("/", "converged", std::int64_t{r.converged});
     f.set_attribute("/", "minimal_outliers", r.minimal_outliers);
     f.set_attribute("/", "mine_count", static_cast<std::int64_t>(r.mine_count));
-    f.set_attribute("/", "navigation_hash", r.navigation_hash);
-    f.set_attribute("/", "bounds_hash", r.bounds_hash);
-    f.set_attribute("/", "marks_hash", r.marks_hash);
+    f.set_attribute("/", "navigation_sha256", r.navigation_digest);
+    f.set_attribute("/", "bounds_sha256", r.bounds_digest);
+    f.set_attribute("/", "marks_sha256", r.marks_digest);
     f.set_attribute("/", "mark_count", r.mark_count);
     f.set_attribute("/", "gesmi_version", r.version);
     for (const auto& [name, ms] : r.timings_ms) f.set_attribute("/", "timing_" + name + "_ms", ms);
+    std::vector<std::pair<std::string, std::string>> fields = root_fields(r);
+    for (const char* dataset : kDatasets) fields.emplace_back(dataset, *f.string_attribute(dataset, "sha256"));
+    f.set_attribute("/", "sha256", digest_of_fields(fields));
     f.close();
   }
   out.commit();
@@ -91,50 +139,65 @@ void write_result(const SolveResult& r, const std::string& path) {
 
 SolveResult read_result(const std::string& path, bool with_waterfall) {
   const H5File f = H5File::open_read(path);
-  if (f.string_attribute("/", "format") != std::optional<std::string>(kFormat))
-    throw FormatError(path + ": not a gesmi result file (attribute 'format' is not '" + kFormat + "')");
   SolveResult r;
+  r.format_version = check_format(f, kFormat, "gesmi result", kVersions);
+  const bool verified = r.format_version >= 2;
   const auto text = [&](const char* name) {
     const auto v = f.string_attribute("/", name);
-    if (!v) throw FormatError(path + ": /: missing attribute " + name);
+    if (!v) bad(f, "/", std::string("missing attribute ") + name);
     return *v;
   };
-  const auto integer = [&](const char* name) {
+  const auto integer = [&](const char* name, std::int64_t lowest, std::int64_t highest) {
     const auto v = f.int_attribute("/", name);
-    if (!v) throw FormatError(path + ": /: missing attribute " + name);
+    if (!v) bad(f, "/", std::string("missing attribute ") + name);
+    if (*v < lowest || *v > highest)
+      bad(f, "/", std::string("attribute ") + name + " must be between " + std::to_string(lowest) + " and " +
+                      std::to_string(highest) + ", found " + std::to_string(*v));
     return *v;
   };
-  r.consistent = text("status") == "consistent";
+  const std::string status = text("status");
+  if (status != "consistent" && status != "inconsistent") bad(f, "/", "attribute status must be consistent or inconsistent");
+  r.consistent = status == "consistent";
   r.message = text("inconsistency");
-  r.sweeps = integer("sweeps");
-  r.converged = integer("converged") != 0;
-  r.minimal_outliers = integer("minimal_outliers");
-  r.mine_count = static_cast<int>(integer("mine_count"));
-  if (r.mine_count < 0 || r.mine_count > 64) throw FormatError(path + ": /: mine_count out of range");
-  r.navigation_hash = text("navigation_hash");
-  r.bounds_hash = text("bounds_hash");
-  r.marks_hash = text("marks_hash");
-  r.mark_count = integer("mark_count");
+  r.sweeps = integer("sweeps", 0, std::numeric_limits<std::int32_t>::max());
+  r.converged = integer("converged", 0, 1) != 0;
+  r.minimal_outliers = integer("minimal_outliers", -1, std::numeric_limits<std::int32_t>::max());
+  r.mine_count = static_cast<int>(integer("mine_count", 0, kMaxMines));
+  r.mark_count = integer("mark_count", 0, static_cast<std::int64_t>(kMaxDatasetValues));
   r.version = text("gesmi_version");
+  if (verified) {
+    r.navigation_digest = text("navigation_sha256");
+    r.bounds_digest = text("bounds_sha256");
+    r.marks_digest = text("marks_sha256");
+  }
   for (const char* name : {"load", "build", "propagate", "waterfall", "write"})
     if (const auto ms = f.double_attribute("/", std::string("timing_") + name + "_ms")) r.timings_ms[name] = *ms;
+
   r.time = f.read_doubles("/time");
   const std::size_t n = r.time.size();
-  if (n < 2) throw FormatError(path + ": /time: expected at least 2 samples");
+  if (verified) verify_digest(f, "/time", r.time, n, 1);
+  if (n < 2) bad(f, "/time", "expected at least 2 samples");
+  for (std::size_t k = 0; k < n; ++k)
+    if (!std::isfinite(r.time[k]) || (k > 0 && !(r.time[k] > r.time[k - 1])))
+      bad(f, "/time", "row " + std::to_string(k) + ": times must be finite and increase");
   TubeDomains& d = r.domains;
   std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
-  read_bounds(f, "/tube", tube, n);
+  read_bounds(f, "/tube", tube, n, verified);
   std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
-  read_bounds(f, "/increments", increments, n - 1);
+  read_bounds(f, "/increments", increments, n - 1, verified);
   std::vector<Interval> mx, my, mz;
   std::vector<Interval>* mines[3] = {&mx, &my, &mz};
   const std::size_t k = static_cast<std::size_t>(r.mine_count);
-  read_bounds(f, "/mines", mines, k);
+  read_bounds(f, "/mines", mines, k, verified);
   for (std::size_t i = 0; i < k; ++i) d.mines.emplace_back(mx[i], my[i], mz[i]);
+
+  const auto marks = static_cast<std::size_t>(r.mark_count);
   const H5Shape cs = f.shape("/marks/candidates");
-  if (cs.rows != static_cast<std::size_t>(r.mark_count) || (cs.rows > 0 && cs.columns != k))
-    throw FormatError(path + ": /marks/candidates: expected " + std::to_string(r.mark_count) + " x " + std::to_string(k));
+  if (cs.rows != marks || (cs.rows > 0 && cs.columns != k))
+    bad(f, "/marks/candidates", "expected " + std::to_string(marks) + " x " + std::to_string(k));
   const std::vector<std::int32_t> candidates = f.read_ints("/marks/candidates");
+  if (verified) verify_digest(f, "/marks/candidates", candidates, cs.rows, cs.columns);
+  expect_flags(f, "/marks/candidates", candidates);
   r.candidates.assign(cs.rows, 0);
   for (std::size_t j = 0; j < cs.rows; ++j)
     for (std::size_t i = 0; i < k; ++i)
@@ -143,20 +206,68 @@ SolveResult read_result(const std::string& path, bool with_waterfall) {
   r.mark_time = f.read_doubles("/marks/time");
   r.mark_range = f.read_doubles("/marks/range");
   r.mark_mine = f.read_ints("/marks/mine");
-  const auto marks = static_cast<std::size_t>(r.mark_count);
   if (r.outlier.size() != marks || r.mark_time.size() != marks || r.mark_range.size() != marks || r.mark_mine.size() != marks)
-    throw FormatError(path + ": /marks: expected " + std::to_string(marks) + " rows in every dataset");
+    bad(f, "/marks", "expected " + std::to_string(marks) + " rows in every dataset");
   r.gps_outlier = f.read_ints("/gps/outlier");
+  if (verified) {
+    verify_digest(f, "/marks/outlier", r.outlier, marks, 1);
+    verify_digest(f, "/marks/time", r.mark_time, marks, 1);
+    verify_digest(f, "/marks/range", r.mark_range, marks, 1);
+    verify_digest(f, "/marks/mine", r.mark_mine, marks, 1);
+    verify_digest(f, "/gps/outlier", r.gps_outlier, r.gps_outlier.size(), 1);
+  }
+  expect_flags(f, "/marks/outlier", r.outlier);
+  expect_flags(f, "/gps/outlier", r.gps_outlier);
+  for (std::size_t j = 0; j < marks; ++j) {
+    const std::string row = "row " + std::to_string(j);
+    if (!std::isfinite(r.mark_time[j])) bad(f, "/marks/time", row + ": time must be finite");
+    if (!std::isfinite(r.mark_range[j]) || r.mark_range[j] < 0.0) bad(f, "/marks/range", row + ": range must be finite and >= 0");
+    if (r.mark_mine[j] < -1 || r.mark_mine[j] >= r.mine_count)
+      bad(f, "/marks/mine", row + ": mine " + std::to_string(r.mark_mine[j]) + " is not one of the result's " +
+                                std::to_string(r.mine_count) + " mines (-1 for unknown)");
+  }
   if (with_waterfall) {
     const H5Shape ws = f.shape("/waterfall/lower");
     if (ws.rows != n || (k > 0 && ws.columns != k))
-      throw FormatError(path + ": /waterfall/lower: expected " + std::to_string(n) + " x " + std::to_string(k));
+      bad(f, "/waterfall/lower", "expected " + std::to_string(n) + " x " + std::to_string(k));
     r.waterfall.steps = n;
     r.waterfall.mines = k;
     r.waterfall.lower = f.read_doubles("/waterfall/lower");
     r.waterfall.upper = f.read_doubles("/waterfall/upper");
     if (r.waterfall.upper.size() != r.waterfall.lower.size())
-      throw FormatError(path + ": /waterfall/upper: shape differs from /waterfall/lower");
+      bad(f, "/waterfall/upper", "shape differs from /waterfall/lower");
+    if (verified) {
+      verify_digest(f, "/waterfall/lower", r.waterfall.lower, ws.rows, ws.columns);
+      verify_digest(f, "/waterfall/upper", r.waterfall.upper, ws.rows, ws.columns);
+    }
+    for (std::size_t i = 0; i < r.waterfall.lower.size(); ++i) {
+      const double lo = r.waterfall.lower[i], hi = r.waterfall.upper[i];
+      if (!(std::isnan(lo) && std::isnan(hi)) && !(lo <= hi))
+        bad(f, "/waterfall", "cell " + std::to_string(i) + ": lower bound above upper bound");
+    }
+  }
+  if (verified) {
+    std::vector<std::pair<std::string, std::string>> fields = root_fields(r);
+    for (const char* dataset : kDatasets) {
+      const auto stored = f.string_attribute(dataset, "sha256");
+      if (!stored) bad(f, dataset, "has no sha256 attribute (edited or damaged)");
+      fields.emplace_back(dataset, *stored);
+    }
+    if (f.string_attribute("/", "sha256") != digest_of_fields(fields))
+      bad(f, "/", "attributes or dataset digests differ from the SHA-256 gesmi recorded when it wrote the file "
+                  "(edited or damaged); solve again to get a result you can trust");
+  }
+  if (r.consistent) {
+    const auto any_empty = [](const std::vector<Interval>& v) {
+      for (const Interval& x : v)
+        if (x.is_empty()) return true;
+      return false;
+    };
+    for (const auto* axis : {&d.px, &d.py, &d.pz, &d.dx, &d.dy, &d.dz})
+      if (any_empty(*axis)) bad(f, "/tube", "a consistent result with an empty domain (edited or damaged)");
+    for (const Vec3I& m : d.mines)
+      for (int c = 0; c < 3; ++c)
+        if (m[c].is_empty()) bad(f, "/mines", "a consistent result with an empty mine box (edited or damaged)");
   }
   return r;
 }

@@ -56,38 +56,63 @@ H5File H5File::open_read(const std::string& path) {
   return H5File(H5Handle(id, H5Fclose), path);
 }
 
-H5File H5File::create(const std::string& path) {
+H5File H5File::create(const std::string& path, const std::string& shown_as) {
   silence_hdf5();
+  const std::string name = shown_as.empty() ? path : shown_as;
   const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (id < 0) throw FormatError(path + ": cannot create the file");
-  return H5File(H5Handle(id, H5Fclose), path);
+  if (id < 0) throw FormatError(name + ": cannot create the file");
+  return H5File(H5Handle(id, H5Fclose), name);
 }
 
 void H5File::close() {
   if (!file_.valid()) return;
-  if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("", "cannot flush the file");
-  file_.reset();
+  const bool flushed = H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0;
+  const bool closed = H5Fclose(file_.release()) >= 0;
+  if (!flushed || !closed) fail("", "cannot write the file (disk full?)");
 }
 
-bool H5File::has(const std::string& object) const {
-  // Check each level: H5Lexists fails when an intermediate group is missing.
-  std::size_t pos = 0;
-  while (true) {
-    pos = object.find('/', pos + 1);
-    const std::string prefix = object.substr(0, pos);
-    if (prefix.empty() || prefix == "/") {
-      if (pos == std::string::npos) return true;
+H5Kind H5File::kind(const std::string& object) const {
+  if (object.empty() || object == "/") return H5Kind::group;
+  // Walk the path one level at a time: H5Lexists fails when an intermediate level
+  // is missing or is not a group, and only hard links name plain objects (a soft
+  // or external link could point anywhere, another file included).
+  std::size_t end = 0;
+  while (end != std::string::npos) {
+    end = object.find('/', end + 1);
+    const std::string level = object.substr(0, end);
+    const htri_t exists = H5Lexists(file_.get(), level.c_str(), H5P_DEFAULT);
+    if (exists < 0) fail(level, "cannot be read (damaged file?)");
+    if (exists == 0) return H5Kind::missing;
+    H5L_info_t link{};
+    if (H5Lget_info(file_.get(), level.c_str(), &link, H5P_DEFAULT) < 0) fail(level, "cannot be read (damaged file?)");
+    if (link.type != H5L_TYPE_HARD) fail(level, "is a soft or external link; gesmi reads only plain groups and datasets");
+    const H5Handle o(H5Oopen(file_.get(), level.c_str(), H5P_DEFAULT), H5Oclose);
+    if (!o.valid()) fail(level, "cannot be opened (damaged file?)");
+    const H5I_type_t type = H5Iget_type(o.get());
+    const bool last = end == std::string::npos || end + 1 == object.size();
+    if (!last) {
+      if (type != H5I_GROUP) fail(level, "expected a group, found a dataset");
       continue;
     }
-    if (H5Lexists(file_.get(), prefix.c_str(), H5P_DEFAULT) <= 0) return false;
-    if (pos == std::string::npos) return true;
+    if (type == H5I_GROUP) return H5Kind::group;
+    if (type == H5I_DATASET) return H5Kind::dataset;
+    fail(level, "expected a group or a dataset, found a named datatype");
   }
+  return H5Kind::missing;
+}
+
+bool H5File::has_group(const std::string& group) const {
+  const H5Kind k = kind(group);
+  if (k == H5Kind::dataset) fail(group, "expected a group, found a dataset");
+  return k == H5Kind::group;
 }
 
 H5Handle H5File::open_dataset(const std::string& dataset) const {
-  if (!has(dataset)) fail(dataset, "missing dataset");
+  const H5Kind k = kind(dataset);
+  if (k == H5Kind::missing) fail(dataset, "missing dataset");
+  if (k == H5Kind::group) fail(dataset, "expected a dataset, found a group");
   const hid_t id = H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT);
-  if (id < 0) fail(dataset, "is not a dataset");
+  if (id < 0) fail(dataset, "cannot be opened (damaged file?)");
   return H5Handle(id, H5Dclose);
 }
 
@@ -98,54 +123,11 @@ H5Shape H5File::shape(const std::string& dataset) const {
   const int rank = H5Sget_simple_extent_ndims(space.get());
   if (rank < 1 || rank > 2) fail(dataset, "expected 1 or 2 dimensions, found " + std::to_string(rank));
   hsize_t dims[2] = {0, 1};
-  H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  if (H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0) fail(dataset, "cannot read its shape");
+  if (dims[0] > kMaxDatasetValues || dims[1] > kMaxDatasetValues || dims[0] * dims[1] > kMaxDatasetValues)
+    fail(dataset, "declares " + std::to_string(dims[0]) + (rank == 2 ? " x " + std::to_string(dims[1]) : "") +
+                      " values, more than gesmi reads from one dataset (" + std::to_string(kMaxDatasetValues) + ")");
   return H5Shape{static_cast<std::size_t>(dims[0]), rank == 2 ? static_cast<std::size_t>(dims[1]) : 1, rank};
-}
-
-void H5File::read_doubles_into(const std::string& dataset, std::span<double> out) const {
-  const H5Shape s = shape(dataset);
-  if (s.rows * s.columns != out.size())
-    fail(dataset, "expected " + std::to_string(out.size()) + " values, found " + std::to_string(s.rows * s.columns));
-  const H5Handle d = open_dataset(dataset);
-  const H5Handle type(H5Dget_type(d.get()), H5Tclose);
-  const H5T_class_t cls = H5Tget_class(type.get());
-  if (cls != H5T_FLOAT && cls != H5T_INTEGER) fail(dataset, "expected numbers");
-  if (out.empty()) return;
-  if (H5Dread(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
-    fail(dataset, "cannot read the values (truncated or damaged file)");
-}
-
-void H5File::read_column_into(const std::string& dataset, std::size_t column, std::span<double> out) const {
-  const H5Shape s = shape(dataset);
-  if (s.rank != 2 || column >= s.columns) fail(dataset, "expected a 2-D dataset with column " + std::to_string(column));
-  if (s.rows != out.size()) fail(dataset, "expected " + std::to_string(out.size()) + " rows, found " + std::to_string(s.rows));
-  if (out.empty()) return;
-  const H5Handle d = open_dataset(dataset);
-  const H5Handle file_space(H5Dget_space(d.get()), H5Sclose);
-  const hsize_t start[2] = {0, column}, count[2] = {s.rows, 1};
-  const hsize_t memory_dims[1] = {s.rows};
-  const H5Handle memory_space(H5Screate_simple(1, memory_dims, nullptr), H5Sclose);
-  if (H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr) < 0 ||
-      H5Dread(d.get(), H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(), H5P_DEFAULT, out.data()) < 0)
-    fail(dataset, "cannot read column " + std::to_string(column) + " (truncated or damaged file)");
-}
-
-std::vector<double> H5File::read_doubles(const std::string& dataset) const {
-  const H5Shape s = shape(dataset);
-  std::vector<double> values(s.rows * s.columns);
-  read_doubles_into(dataset, values);
-  return values;
-}
-
-std::vector<std::int32_t> H5File::read_ints(const std::string& dataset) const {
-  const H5Shape s = shape(dataset);
-  const H5Handle d = open_dataset(dataset);
-  const H5Handle type(H5Dget_type(d.get()), H5Tclose);
-  if (H5Tget_class(type.get()) != H5T_INTEGER) fail(dataset, "expected integers");
-  std::vector<std::int32_t> values(s.rows * s.columns);
-  if (!values.empty() && H5Dread(d.get(), H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
-    fail(dataset, "cannot read the values (truncated or damaged file)");
-  return values;
 }
 
 void H5File::ensure_parent_groups(const std::string& dataset) {
@@ -161,16 +143,12 @@ void H5File::ensure_parent_groups(const std::string& dataset) {
 namespace {
 
 template <class T>
-void write_dataset(H5File& file, hid_t file_id, const std::string& dataset, std::span<const T> values, std::size_t rows,
-                   std::size_t columns, int rank, hid_t memory_type, hid_t file_type,
-                   void (H5File::*ensure)(const std::string&), const std::string& path) {
-  (file.*ensure)(dataset);
-  if (values.size() != rows * columns) throw FormatError(path + ": " + dataset + ": internal shape mismatch");
-  const hsize_t dims[2] = {rows, columns};
+void write_dataset(hid_t file_id, const std::string& dataset, std::span<const T> values, const hsize_t* dims, int rank,
+                   hid_t memory_type, hid_t file_type, const std::string& path) {
   const H5Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
   const H5Handle d(H5Dcreate2(file_id, dataset.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                    H5Dclose);
-  if (!d.valid()) throw FormatError(path + ": " + dataset + ": cannot create the dataset");
+  if (!d.valid()) throw FormatError(path + ": " + dataset + ": cannot create the dataset (disk full?)");
   if (!values.empty() && H5Dwrite(d.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
     throw FormatError(path + ": " + dataset + ": cannot write (disk full?)");
 }
@@ -179,14 +157,18 @@ void write_dataset(H5File& file, hid_t file_id, const std::string& dataset, std:
 
 void H5File::write(const std::string& dataset, std::span<const double> values, std::size_t rows, std::size_t columns,
                    int rank) {
-  write_dataset(*this, file_.get(), dataset, values, rows, columns, rank, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE,
-                &H5File::ensure_parent_groups, path_);
+  ensure_parent_groups(dataset);
+  if (values.size() != rows * columns) fail(dataset, "internal shape mismatch");
+  const hsize_t dims[2] = {rows, columns};
+  write_dataset(file_.get(), dataset, values, dims, rank, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, path_);
 }
 
 void H5File::write(const std::string& dataset, std::span<const std::int32_t> values, std::size_t rows,
                    std::size_t columns, int rank) {
-  write_dataset(*this, file_.get(), dataset, values, rows, columns, rank, H5T_NATIVE_INT32, H5T_STD_I32LE,
-                &H5File::ensure_parent_groups, path_);
+  ensure_parent_groups(dataset);
+  if (values.size() != rows * columns) fail(dataset, "internal shape mismatch");
+  const hsize_t dims[2] = {rows, columns};
+  write_dataset(file_.get(), dataset, values, dims, rank, H5T_NATIVE_INT32, H5T_STD_I32LE, path_);
 }
 
 void H5File::write_3d(const std::string& dataset, std::span<const double> values, std::size_t d0, std::size_t d1,
@@ -194,88 +176,7 @@ void H5File::write_3d(const std::string& dataset, std::span<const double> values
   ensure_parent_groups(dataset);
   if (values.size() != d0 * d1 * d2) fail(dataset, "internal shape mismatch");
   const hsize_t dims[3] = {d0, d1, d2};
-  const H5Handle space(H5Screate_simple(3, dims, nullptr), H5Sclose);
-  const H5Handle d(H5Dcreate2(file_.get(), dataset.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT,
-                              H5P_DEFAULT),
-                   H5Dclose);
-  if (!d.valid()) fail(dataset, "cannot create the dataset");
-  if (!values.empty() && H5Dwrite(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
-    fail(dataset, "cannot write (disk full?)");
-}
-
-namespace {
-
-H5Handle open_object(hid_t file, const std::string& object) {
-  return H5Handle(H5Oopen(file, object.c_str(), H5P_DEFAULT), H5Oclose);
-}
-
-}  // namespace
-
-void H5File::set_attribute(const std::string& object, const std::string& name, double value) {
-  const H5Handle o = open_object(file_.get(), object);
-  const H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  const H5Handle a(H5Acreate2(o.get(), name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-  if (!a.valid() || H5Awrite(a.get(), H5T_NATIVE_DOUBLE, &value) < 0) fail(object, "cannot write attribute " + name);
-}
-
-void H5File::set_attribute(const std::string& object, const std::string& name, std::int64_t value) {
-  const H5Handle o = open_object(file_.get(), object);
-  const H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  const H5Handle a(H5Acreate2(o.get(), name.c_str(), H5T_STD_I64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-  if (!a.valid() || H5Awrite(a.get(), H5T_NATIVE_INT64, &value) < 0) fail(object, "cannot write attribute " + name);
-}
-
-void H5File::set_attribute(const std::string& object, const std::string& name, const std::string& value) {
-  const H5Handle o = open_object(file_.get(), object);
-  const H5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-  H5Tset_size(type.get(), value.empty() ? 1 : value.size());
-  H5Tset_strpad(type.get(), H5T_STR_NULLPAD);
-  const H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  const H5Handle a(H5Acreate2(o.get(), name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-  const std::string stored = value.empty() ? std::string(1, '\0') : value;
-  if (!a.valid() || H5Awrite(a.get(), type.get(), stored.data()) < 0) fail(object, "cannot write attribute " + name);
-}
-
-namespace {
-
-H5Handle open_attribute(hid_t file, const std::string& object, const std::string& name) {
-  if (H5Aexists_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT) <= 0) return H5Handle();
-  return H5Handle(H5Aopen_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-}
-
-}  // namespace
-
-std::optional<double> H5File::double_attribute(const std::string& object, const std::string& name) const {
-  if (object != "/" && !has(object)) return std::nullopt;
-  const H5Handle a = open_attribute(file_.get(), object, name);
-  if (!a.valid()) return std::nullopt;
-  double value = 0.0;
-  if (H5Aread(a.get(), H5T_NATIVE_DOUBLE, &value) < 0) fail(object, "attribute " + name + " is not a number");
-  return value;
-}
-
-std::optional<std::int64_t> H5File::int_attribute(const std::string& object, const std::string& name) const {
-  if (object != "/" && !has(object)) return std::nullopt;
-  const H5Handle a = open_attribute(file_.get(), object, name);
-  if (!a.valid()) return std::nullopt;
-  const H5Handle type(H5Aget_type(a.get()), H5Tclose);
-  if (H5Tget_class(type.get()) != H5T_INTEGER) fail(object, "attribute " + name + " is not an integer");
-  std::int64_t value = 0;
-  if (H5Aread(a.get(), H5T_NATIVE_INT64, &value) < 0) fail(object, "cannot read attribute " + name);
-  return value;
-}
-
-std::optional<std::string> H5File::string_attribute(const std::string& object, const std::string& name) const {
-  if (object != "/" && !has(object)) return std::nullopt;
-  const H5Handle a = open_attribute(file_.get(), object, name);
-  if (!a.valid()) return std::nullopt;
-  const H5Handle type(H5Aget_type(a.get()), H5Tclose);
-  if (H5Tget_class(type.get()) != H5T_STRING || H5Tis_variable_str(type.get()) > 0)
-    fail(object, "attribute " + name + " is not a fixed-length string");
-  std::string value(H5Tget_size(type.get()), '\0');
-  if (H5Aread(a.get(), type.get(), value.data()) < 0) fail(object, "cannot read attribute " + name);
-  while (!value.empty() && value.back() == '\0') value.pop_back();
-  return value;
+  write_dataset(file_.get(), dataset, values, dims, 3, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, path_);
 }
 
 }  // namespace gesmi::io

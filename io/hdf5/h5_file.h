@@ -3,6 +3,11 @@
 // from HDF5 2.0): files, typed 1-D and 2-D datasets of double and int32, and scalar
 // attributes. Every failure is a FormatError naming the file, the object and the
 // reason; HDF5's own error printing is switched off.
+//
+// Reading never trusts the file: before any value is read, the object's kind
+// (group or dataset, through hard links only), class, rank, dimensions and stored
+// size are checked, so a hostile or damaged file gives one FormatError and never an
+// overflow or an allocation the file cannot back (docs/formats.md, "Limits").
 
 #include <cstdint>
 #include <optional>
@@ -26,6 +31,12 @@ class H5Handle {
   std::int64_t get() const { return id_; }
   bool valid() const { return id_ >= 0; }
   void reset();
+  /// Gives up ownership without closing.
+  std::int64_t release() {
+    const std::int64_t id = id_;
+    id_ = -1;
+    return id;
+  }
 
  private:
   std::int64_t id_ = -1;
@@ -38,21 +49,39 @@ struct H5Shape {
   int rank = 1;
 };
 
+/// Largest number of values gesmi reads from one dataset (8 GB of doubles); a
+/// file declaring more is refused before anything is allocated.
+inline constexpr std::size_t kMaxDatasetValues = 1'000'000'000;
+/// Largest string attribute gesmi reads (bytes).
+inline constexpr std::size_t kMaxStringAttribute = 1 << 20;
+
+enum class H5Kind { missing, group, dataset };
+
 class H5File {
  public:
   /// Opens an existing file read-only; FormatError if it is missing or not HDF5.
   static H5File open_read(const std::string& path);
-  /// Creates (truncates) a file for writing.
-  static H5File create(const std::string& path);
+  /// Creates (truncates) a file for writing at `path`; messages name `shown_as`
+  /// (the final name of a file written under a temporary one).
+  static H5File create(const std::string& path, const std::string& shown_as = {});
 
+  /// The name used in messages.
   const std::string& path() const { return path_; }
 
-  bool has(const std::string& object) const;
-  /// Shape of a dataset; FormatError if missing or not 1-D/2-D.
+  /// What `object` is; missing when any level of the path is absent. FormatError
+  /// when a level of the path is not a group, or is a soft or external link.
+  H5Kind kind(const std::string& object) const;
+  /// True when `object` exists (a group or a dataset).
+  bool has(const std::string& object) const { return kind(object) != H5Kind::missing; }
+  /// True when `group` exists as a group; FormatError when it exists as something else.
+  bool has_group(const std::string& group) const;
+  /// Shape of a dataset; FormatError if missing, not a dataset, or not 1-D/2-D.
   H5Shape shape(const std::string& dataset) const;
 
-  /// Reads a whole dataset (1-D, or 2-D row-major) converting to double / int32.
+  /// Reads a whole dataset (1-D, or 2-D row-major) as doubles: floating-point data
+  /// of up to 64 bits, or integers whose values doubles hold exactly.
   std::vector<double> read_doubles(const std::string& dataset) const;
+  /// Reads a whole dataset of integers that fit in 32 bits.
   std::vector<std::int32_t> read_ints(const std::string& dataset) const;
   /// Reads into a caller-sized buffer (no extra copy); sizes must match.
   void read_doubles_into(const std::string& dataset, std::span<double> out) const;
@@ -72,7 +101,9 @@ class H5File {
   void write_3d(const std::string& dataset, std::span<const double> values, std::size_t d0, std::size_t d1,
                 std::size_t d2);
 
-  // Attributes on an object ("/" for the file).
+  // Attributes on an object ("/" for the file). Readers return nullopt when the
+  // attribute is absent and throw FormatError when it is not exactly one value of
+  // the expected kind (a number, an integer, a string).
   void set_attribute(const std::string& object, const std::string& name, double value);
   void set_attribute(const std::string& object, const std::string& name, std::int64_t value);
   void set_attribute(const std::string& object, const std::string& name, const std::string& value);
@@ -88,6 +119,10 @@ class H5File {
   [[noreturn]] void fail(const std::string& object, const std::string& reason) const;
   void ensure_parent_groups(const std::string& dataset);
   H5Handle open_dataset(const std::string& dataset) const;
+  H5Handle open_attribute(const std::string& object, const std::string& name) const;
+  /// The shape, once class and stored size are known to be readable (integers or numbers).
+  H5Shape checked_shape(const std::string& dataset, bool integers) const;
+  void read_checked(const std::string& dataset, std::span<double> out, std::size_t column) const;
   H5Handle file_;
   std::string path_;
 };

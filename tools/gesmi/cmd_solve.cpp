@@ -9,12 +9,12 @@
 
 #include "io/atomic_output.h"
 #include "io/io_version.h"
+#include "io/mission_digest.h"
 #include "io/mission_file.h"
 #include "io/plot/plot_envelope.h"
 #include "io/result_exports.h"
 #include "io/result_file.h"
 #include "io/sensor_model_yaml.h"
-#include "solver/mission/mission_hash.h"
 #include "solver/network/incremental_solver.h"
 #include "solver/network/outlier_solver.h"
 #include "tools/gesmi/cli_args.h"
@@ -58,13 +58,15 @@ struct Run {
 // returns its candidates by mark row. Throws UsageError naming what changed.
 std::vector<std::uint64_t> check_warm_start(const io::SolveResult& previous, const Mission& mission,
                                             const std::string& from) {
-  if (previous.navigation_hash != navigation_hash(mission))
+  if (previous.format_version < 2)
+    throw UsageError("--from " + from + ": written by an earlier gesmi, without the digests a warm start checks; run a cold solve");
+  if (previous.navigation_digest != io::navigation_digest(mission))
     throw UsageError("--from " + from + ": the navigation data (DVL, attitude, depth, altitude, GPS) differ from the "
                      "mission it was computed on; run a cold solve");
-  if (previous.bounds_hash != bounds_hash(mission.model))
+  if (previous.bounds_digest != io::bounds_digest(mission.model))
     throw UsageError("--from " + from + ": the sensor bounds differ from those it was computed with; run a cold solve");
   const auto old_marks = static_cast<std::size_t>(previous.mark_count);
-  if (old_marks > mission.mark_count() || previous.marks_hash != marks_hash(mission, old_marks))
+  if (old_marks > mission.mark_count() || previous.marks_digest != io::marks_digest(mission, old_marks))
     throw UsageError("--from " + from + ": the mark table changed other than by added rows; run a cold solve");
   if (previous.time.size() != mission.size() || previous.mine_count != mission.mine_count)
     throw UsageError("--from " + from + ": it was computed on another mission");
@@ -274,9 +276,9 @@ int run_solve(std::span<const std::string> args) {
   result.sweeps = run.report.sweeps;
   result.converged = run.report.converged;
   result.minimal_outliers = max_outliers >= 0 ? run.minimal_outliers : 0;
-  result.navigation_hash = navigation_hash(run.mission);
-  result.bounds_hash = bounds_hash(run.mission.model);
-  result.marks_hash = marks_hash(run.mission, run.mission.mark_count());
+  result.navigation_digest = io::navigation_digest(run.mission);
+  result.bounds_digest = io::bounds_digest(run.mission.model);
+  result.marks_digest = io::marks_digest(run.mission, run.mission.mark_count());
   result.mark_count = static_cast<std::int64_t>(run.mission.mark_count());
   result.version = std::string(io::version());
   result.timings_ms = timings;

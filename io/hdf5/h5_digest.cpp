@@ -1,0 +1,69 @@
+#include "io/hdf5/h5_digest.h"
+
+#include "io/digest/sha256.h"
+#include "io/format_error.h"
+
+namespace gesmi::io {
+namespace {
+
+template <class T>
+std::string digest(const std::string& dataset, std::span<const T> values, std::size_t rows, std::size_t columns) {
+  Sha256 h;
+  h.add(std::string_view(dataset));
+  h.add_count(rows);
+  h.add_count(columns);
+  h.add(values);
+  return h.hex();
+}
+
+template <class T>
+std::string write_with_digest(H5File& f, const std::string& dataset, std::span<const T> values, std::size_t rows,
+                              std::size_t columns, int rank) {
+  f.write(dataset, values, rows, columns, rank);
+  const std::string hex = digest(dataset, values, rows, columns);
+  f.set_attribute(dataset, "sha256", hex);
+  return hex;
+}
+
+template <class T>
+std::string verify(const H5File& f, const std::string& dataset, std::span<const T> values, std::size_t rows,
+                   std::size_t columns) {
+  const std::optional<std::string> stored = f.string_attribute(dataset, "sha256");
+  if (!stored) throw FormatError(f.path() + ": " + dataset + ": has no sha256 attribute (not written by this gesmi)");
+  const std::string hex = digest(dataset, values, rows, columns);
+  if (*stored != hex)
+    throw FormatError(f.path() + ": " + dataset +
+                      ": contents differ from the SHA-256 gesmi recorded when it wrote the file (edited or damaged); "
+                      "solve again to get a result you can trust");
+  return hex;
+}
+
+}  // namespace
+
+std::string write_digested(H5File& f, const std::string& dataset, std::span<const double> values, std::size_t rows,
+                           std::size_t columns, int rank) {
+  return write_with_digest(f, dataset, values, rows, columns, rank);
+}
+std::string write_digested(H5File& f, const std::string& dataset, std::span<const std::int32_t> values,
+                           std::size_t rows, std::size_t columns, int rank) {
+  return write_with_digest(f, dataset, values, rows, columns, rank);
+}
+std::string verify_digest(const H5File& f, const std::string& dataset, std::span<const double> values,
+                          std::size_t rows, std::size_t columns) {
+  return verify(f, dataset, values, rows, columns);
+}
+std::string verify_digest(const H5File& f, const std::string& dataset, std::span<const std::int32_t> values,
+                          std::size_t rows, std::size_t columns) {
+  return verify(f, dataset, values, rows, columns);
+}
+
+std::string digest_of_fields(const std::vector<std::pair<std::string, std::string>>& fields) {
+  Sha256 h;
+  for (const auto& [name, value] : fields) {
+    h.add(std::string_view(name));
+    h.add(std::string_view(value));
+  }
+  return h.hex();
+}
+
+}  // namespace gesmi::io

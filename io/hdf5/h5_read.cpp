@@ -1,0 +1,159 @@
+// Reading datasets: every read checks the element class, the shape and the stored
+// size before a value is read or a buffer allocated.
+
+#include <hdf5.h>
+
+#include <cmath>
+#include <limits>
+
+#include "io/format_error.h"
+#include "io/hdf5/h5_file.h"
+
+namespace gesmi::io {
+namespace {
+
+// Integers beyond 2^53 have no exact double.
+constexpr double kLargestExactInteger = 9007199254740992.0;
+// deflate, the strongest filter HDF5 ships, compresses at most about 1032:1.
+constexpr double kLargestCompression = 1100.0;
+
+// Why values of this stored type cannot be read as doubles, or empty.
+std::string double_type_problem(hid_t type) {
+  switch (H5Tget_class(type)) {
+    case H5T_FLOAT:
+      return H5Tget_size(type) <= 8 ? "" : "stores floating-point numbers wider than 64 bits, expected doubles";
+    case H5T_INTEGER:
+      return "";
+    case H5T_ENUM:
+      return "stores an enumeration (booleans?), expected numbers";
+    case H5T_STRING:
+      return "stores strings, expected numbers";
+    default:
+      return "stores compound or opaque values, expected numbers";
+  }
+}
+
+std::string integer_type_problem(hid_t type) {
+  switch (H5Tget_class(type)) {
+    case H5T_INTEGER:
+      return "";
+    case H5T_FLOAT:
+      return "stores floating-point numbers, expected integers";
+    case H5T_ENUM:
+      return "stores an enumeration (booleans?), expected integers";
+    case H5T_STRING:
+      return "stores strings, expected integers";
+    default:
+      return "stores compound or opaque values, expected integers";
+  }
+}
+
+// Why the file cannot back `values` values of `type_size` bytes, or empty: a
+// small file can declare a huge dataset that was never written.
+std::string storage_problem(hid_t dataset, std::size_t values, std::size_t type_size) {
+  if (values == 0) return "";
+  const H5Handle plist(H5Dget_create_plist(dataset), H5Pclose);
+  if (!plist.valid()) return "cannot read its storage properties (damaged file?)";
+  if (H5Pget_layout(plist.get()) == H5D_VIRTUAL) return "is a virtual dataset; gesmi reads only data stored in the file";
+  if (H5Pget_external_count(plist.get()) > 0) return "keeps its data in an external file; gesmi reads only data stored in the file";
+  const double declared = static_cast<double>(values) * static_cast<double>(type_size);
+  const double stored = static_cast<double>(H5Dget_storage_size(dataset));
+  const int filters = H5Pget_nfilters(plist.get());
+  const bool backed = filters > 0 ? declared <= kLargestCompression * stored : declared <= stored;
+  if (backed) return "";
+  return "declares " + std::to_string(values) + " values but the file stores " +
+         std::to_string(static_cast<long long>(stored)) + " bytes for them (never written, or truncated)";
+}
+
+}  // namespace
+
+H5Shape H5File::checked_shape(const std::string& dataset, bool integers) const {
+  const H5Shape s = shape(dataset);
+  const H5Handle d = open_dataset(dataset);
+  const H5Handle type(H5Dget_type(d.get()), H5Tclose);
+  if (!type.valid()) fail(dataset, "cannot read its type (damaged file?)");
+  const std::string why_type = integers ? integer_type_problem(type.get()) : double_type_problem(type.get());
+  if (!why_type.empty()) fail(dataset, why_type);
+  const std::string why_storage = storage_problem(d.get(), s.rows * s.columns, H5Tget_size(type.get()));
+  if (!why_storage.empty()) fail(dataset, why_storage);
+  return s;
+}
+
+void H5File::read_checked(const std::string& dataset, std::span<double> out, std::size_t column) const {
+  const H5Shape s = checked_shape(dataset, false);
+  const bool whole = column == std::string::npos;
+  if (whole && s.rows * s.columns != out.size())
+    fail(dataset, "expected " + std::to_string(out.size()) + " values, found " + std::to_string(s.rows * s.columns));
+  if (!whole && (s.rank != 2 || column >= s.columns))
+    fail(dataset, "expected a 2-D dataset with column " + std::to_string(column));
+  if (!whole && s.rows != out.size())
+    fail(dataset, "expected " + std::to_string(out.size()) + " rows, found " + std::to_string(s.rows));
+  if (out.empty()) return;
+  const H5Handle d = open_dataset(dataset);
+  const H5Handle type(H5Dget_type(d.get()), H5Tclose);
+
+  H5Handle file_space, memory_space;
+  if (!whole) {
+    file_space = H5Handle(H5Dget_space(d.get()), H5Sclose);
+    const hsize_t start[2] = {0, column}, count[2] = {s.rows, 1};
+    const hsize_t memory_dims[1] = {s.rows};
+    memory_space = H5Handle(H5Screate_simple(1, memory_dims, nullptr), H5Sclose);
+    if (!file_space.valid() || !memory_space.valid() ||
+        H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr) < 0)
+      fail(dataset, "cannot select column " + std::to_string(column));
+  }
+  const hid_t memory = whole ? H5S_ALL : memory_space.get(), file = whole ? H5S_ALL : file_space.get();
+  const bool wide_integers = H5Tget_class(type.get()) == H5T_INTEGER && H5Tget_size(type.get()) > 4;
+  if (!wide_integers) {
+    if (H5Dread(d.get(), H5T_NATIVE_DOUBLE, memory, file, H5P_DEFAULT, out.data()) < 0)
+      fail(dataset, "cannot read the values (truncated or damaged file)");
+    return;
+  }
+  // 64-bit integers: read exactly, then refuse values a double cannot hold.
+  const bool is_signed = H5Tget_sign(type.get()) != H5T_SGN_NONE;
+  std::vector<std::int64_t> signed_values(is_signed ? out.size() : 0);
+  std::vector<std::uint64_t> unsigned_values(is_signed ? 0 : out.size());
+  const herr_t status = is_signed ? H5Dread(d.get(), H5T_NATIVE_INT64, memory, file, H5P_DEFAULT, signed_values.data())
+                                  : H5Dread(d.get(), H5T_NATIVE_UINT64, memory, file, H5P_DEFAULT, unsigned_values.data());
+  if (status < 0) fail(dataset, "cannot read the values (truncated or damaged file)");
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const double v = is_signed ? static_cast<double>(signed_values[i]) : static_cast<double>(unsigned_values[i]);
+    if (std::fabs(v) > kLargestExactInteger)
+      fail(dataset, "value " + std::to_string(i) + " is an integer too large to be read exactly");
+    out[i] = v;
+  }
+}
+
+void H5File::read_doubles_into(const std::string& dataset, std::span<double> out) const {
+  read_checked(dataset, out, std::string::npos);
+}
+
+void H5File::read_column_into(const std::string& dataset, std::size_t column, std::span<double> out) const {
+  read_checked(dataset, out, column);
+}
+
+std::vector<double> H5File::read_doubles(const std::string& dataset) const {
+  const H5Shape s = checked_shape(dataset, false);  // before allocating
+  std::vector<double> values(s.rows * s.columns);
+  read_checked(dataset, values, std::string::npos);
+  return values;
+}
+
+std::vector<std::int32_t> H5File::read_ints(const std::string& dataset) const {
+  const H5Shape s = checked_shape(dataset, true);  // before allocating
+  const H5Handle d = open_dataset(dataset);
+  const std::size_t count = s.rows * s.columns;
+  // Read as 64 bits (HDF5 clips larger unsigned values, which the range check then refuses).
+  std::vector<std::int64_t> wide(count);
+  if (count > 0 && H5Dread(d.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, wide.data()) < 0)
+    fail(dataset, "cannot read the values (truncated or damaged file)");
+  std::vector<std::int32_t> values(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (wide[i] < std::numeric_limits<std::int32_t>::min() || wide[i] > std::numeric_limits<std::int32_t>::max())
+      fail(dataset, "value " + std::to_string(i) + " (" + std::to_string(wide[i]) + ") does not fit in 32 bits");
+    values[i] = static_cast<std::int32_t>(wide[i]);
+  }
+  return values;
+}
+
+}  // namespace gesmi::io
