@@ -22,11 +22,15 @@ bool build_reduced_network(const MissionNetwork& full, const TubeDomains& sensor
   };
 
   // The depth tube from the barometer and the vertical increments alone.
-  std::vector<Interval> z = sensor.pz, dz = sensor.dz;
+  r.depth = sensor.pz;
+  r.depth_increments = sensor.dz;
+  std::vector<Interval>& z = r.depth;
+  std::vector<Interval>& dz = r.depth_increments;
   if (!chain_forward(z, dz).consistent() || !chain_backward(z, dz).consistent()) return false;
 
   r.time.clear();
   for (const std::size_t k : events) r.time.push_back(full.time[k]);
+  r.events = events;
   TubeDomains& d = r.domains;
   const std::size_t e = events.size();
   d.px.assign(e, Interval::entire());

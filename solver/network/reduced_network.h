@@ -13,9 +13,13 @@
 namespace gesmi {
 
 struct ReducedNetwork {
+  std::vector<std::size_t> events;  // the full grid's sample index of each event, increasing
   std::vector<double> time;  // event times (owned: net.time points here)
   MissionNetwork net;
   TubeDomains domains;       // sensor priors on the events (no fixes, no mines yet)
+  /// On the full grid: the depth tube and vertical increments from the barometer and
+  /// the sensors alone (one forward-backward pass of the depth chain).
+  std::vector<Interval> depth, depth_increments;
 
   ReducedNetwork() = default;
   ReducedNetwork(const ReducedNetwork&) = delete;

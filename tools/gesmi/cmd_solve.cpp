@@ -29,7 +29,7 @@ using Clock = std::chrono::steady_clock;
 
 constexpr const char* kUsage =
     "gesmi solve MISSION.h5 -o RESULT.h5 [--config bounds.yaml] [--max-sweeps N] [--tolerance T] [--stats] "
-    "[--from RESULT.h5] [--max-outliers Q] [--mines K]";
+    "[--from RESULT.h5] [--max-outliers Q | --minimal-outliers Q] [--trust-gps] [--mines K]";
 
 double elapsed_ms(Clock::time_point since) {
   return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
@@ -99,10 +99,9 @@ bool prepare_warm(Run& run, const io::SolveResult& previous, const std::string& 
   return true;
 }
 
-void solve_with_outlier_search(Run& run, int max_outliers, const SolverOptions& options) {
+void solve_with_outlier_search(Run& run, const OutlierOptions& outliers, const SolverOptions& options) {
   const TubeDomains sensor = sensor_domains(run.mission, run.mission.model);
-  OutlierOptions o;
-  o.max_outliers = max_outliers;
+  OutlierOptions o = outliers;
   o.solver = options;
   const OutlierReport r = solve_with_outliers(run.network, sensor, run.domains, o);
   run.report = r.consistent() ? SolverReport{} : r.first_solve;
@@ -111,7 +110,7 @@ void solve_with_outlier_search(Run& run, int max_outliers, const SolverOptions& 
     run.report.sweeps = r.full_solves;
   }
   run.minimal_outliers = r.minimal_outliers;
-  run.mode = "outliers";
+  run.mode = o.mode == OutlierMode::relaxed ? "outliers" : "minimal-outliers";
   for (std::size_t j = 0; j < run.network.detections.size(); ++j)
     run.outlier[run.network.detections[j].mark] = r.detection_outlier[j];
   for (std::size_t a = 0; a < run.network.anchors.size(); ++a)
@@ -136,6 +135,7 @@ void solve_with_outlier_search(Run& run, int max_outliers, const SolverOptions& 
 std::string diagnose(const Run& run, const SolverOptions& options) {
   OutlierOptions o;
   o.max_outliers = 1;
+  o.mode = OutlierMode::minimal;  // only the hypotheses are wanted
   o.solver = options;
   o.solver.on_sweep = nullptr;
   TubeDomains scratch;
@@ -176,7 +176,13 @@ int run_solve(std::span<const std::string> args) {
       ("tolerance", po::value<std::string>()->default_value("0.001"), "stop when no bound moves more (m)")
       ("stats", "print one JSON object with timings and sweeps on stdout")
       ("from", po::value<std::string>(), "warm start from an earlier result of this mission")
-      ("max-outliers", po::value<std::string>(), "tolerate up to Q wrong detections or GPS fixes")
+      ("max-outliers", po::value<std::string>(),
+       "tolerate up to Q wrong marks or GPS fixes: the result holds every trajectory consistent with all the data "
+       "but at most Q of them (guaranteed whenever at most Q are wrong)")
+      ("minimal-outliers", po::value<std::string>(),
+       "CONDITIONAL: the hull over the smallest sets (q* <= Q) of marks or fixes whose removal restores "
+       "consistency; it contains the truth only if exactly q* inputs are wrong")
+      ("trust-gps", "GPS fixes are never outliers: only marks are tolerated as wrong")
       ("mines", po::value<std::string>(), "number of mines K (default: the mission's)");
   po::positional_options_description positional;
   positional.add("mission", 1);
@@ -189,11 +195,18 @@ int run_solve(std::span<const std::string> args) {
   solver_options.tolerance = parse_non_negative("--tolerance", v["tolerance"].as<std::string>());
   if (!std::isfinite(solver_options.tolerance)) throw UsageError("--tolerance: must be finite");
   int max_outliers = -1;
-  if (v.count("max-outliers")) {
-    const long long q = parse_integer("--max-outliers", v["max-outliers"].as<std::string>());
-    if (q < 0 || q > 8) throw UsageError("--max-outliers: must be between 0 and 8");
+  OutlierOptions outlier_options;
+  for (const char* name : {"max-outliers", "minimal-outliers"}) {
+    if (!v.count(name)) continue;
+    if (max_outliers >= 0) throw UsageError("--max-outliers and --minimal-outliers cannot be combined");
+    const long long q = parse_integer(std::string("--") + name, v[name].as<std::string>());
+    if (q < 0 || q > 8) throw UsageError(std::string("--") + name + ": must be between 0 and 8");
     max_outliers = static_cast<int>(q);
+    outlier_options.mode = std::string(name) == "max-outliers" ? OutlierMode::relaxed : OutlierMode::minimal;
   }
+  outlier_options.max_outliers = max_outliers;
+  outlier_options.trust_fixes = v.count("trust-gps") > 0;
+  if (outlier_options.trust_fixes && max_outliers < 0) throw UsageError("--trust-gps goes with --max-outliers or --minimal-outliers");
   if (v.count("from") && max_outliers >= 0) throw UsageError("--from and --max-outliers cannot be combined");
   const bool stats = v.count("stats") > 0;
   const std::string output = v["output"].as<std::string>();
@@ -243,7 +256,7 @@ int run_solve(std::span<const std::string> args) {
       run.report = solve(run.network, run.domains, solver_options);
     }
   } else if (max_outliers >= 0) {
-    solve_with_outlier_search(run, max_outliers, solver_options);
+    solve_with_outlier_search(run, outlier_options, solver_options);
   } else {
     run.domains = sensor_domains(run.mission, run.mission.model);
     add_network_priors(run.domains, run.network);
