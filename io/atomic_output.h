@@ -6,6 +6,12 @@
 //   AtomicOutput out("result.h5");
 //   write_everything(out.temp_path());   // any writer that takes a path
 //   out.commit();                        // rename; without it the temp file is removed
+//
+// While an OutputSet is open (output_set.h), commit() hands the file to the set,
+// which renames all of a command's files together. The temporary name is
+// "<target>.tmp-<pid>"; temporaries of processes that no longer run are removed
+// when the same target is written again, and an interrupt removes the current
+// ones (interrupt_cleanup.h).
 
 #include <string>
 
@@ -20,20 +26,23 @@ class AtomicOutput {
 
   const std::string& temp_path() const { return temp_path_; }
   const std::string& final_path() const { return final_path_; }
-  /// Renames the temporary file to the final name; throws FormatError on failure.
+  /// Renames the temporary file to the final name (or hands it to the open
+  /// OutputSet); throws FormatError on failure.
   void commit();
 
  private:
   std::string final_path_;
   std::string temp_path_;
+  int slot_ = -1;
   bool committed_ = false;
 };
 
 /// Writes text to path atomically (temporary file, then rename).
 void write_text_file(const std::string& path, const std::string& text);
 
-/// Checks before any work starts that the folder of `path` exists and is writable,
-/// so a long run does not fail at the end; throws FormatError naming the path.
+/// Checks before any work starts that the folder of `path` exists and is writable
+/// and that `path` is not an existing folder, device or pipe, so a long run does not
+/// fail at the end; throws FormatError naming the path.
 void check_writable_target(const std::string& path);
 
 }  // namespace gesmi::io

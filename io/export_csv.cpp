@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "io/atomic_output.h"
 #include "io/csv_number.h"
 #include "io/format_error.h"
 #include "io/import_nav_csv.h"
@@ -46,22 +47,16 @@ class Row {
   std::string line_;
 };
 
-// Removes the temporary folder unless the export completed.
-struct TempFolder {
-  fs::path path;
-  bool keep = false;
-  ~TempFolder() {
-    std::error_code ec;
-    if (!keep) fs::remove_all(path, ec);
-  }
-};
-
 void write_file(const fs::path& path, void (*writer)(const Mission&, std::ostream&), const Mission& m) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw FormatError(path.string() + ": cannot create the file: " + std::strerror(errno));
-  writer(m, out);
-  out.flush();
-  if (!out) throw FormatError(path.string() + ": cannot write (disk full?)");
+  AtomicOutput file(path.string());
+  {
+    std::ofstream out(file.temp_path(), std::ios::binary);
+    if (!out) throw FormatError(path.string() + ": cannot create the file: " + std::strerror(errno));
+    writer(m, out);
+    out.flush();
+    if (!out) throw FormatError(path.string() + ": cannot write (disk full?)");
+  }
+  file.commit();
 }
 
 }  // namespace
@@ -153,24 +148,20 @@ void check_export_folder(const std::string& folder) {
 void export_mission_csv(const Mission& m, const std::string& folder) {
   check_export_folder(folder);
   const fs::path target = fs::path(folder).lexically_normal();
-  TempFolder temp{fs::path(target.string() + ".tmp-" + std::to_string(::getpid()))};
   std::error_code ec;
-  fs::remove_all(temp.path, ec);
-  if (!fs::create_directory(temp.path, ec)) throw FormatError(folder + ": cannot create a temporary folder: " + ec.message());
-  write_file(temp.path / "nav.csv", write_nav_csv, m);
-  write_file(temp.path / "gps.csv", write_gps_csv, m);
-  write_file(temp.path / "marks.csv", write_marks_csv, m);
-  if (m.has_truth()) write_file(temp.path / "truth.csv", write_truth_csv, m);
-  if (!m.truth_mines.empty()) write_file(temp.path / "truth_mines.csv", write_truth_mines_csv, m);
-  write_file(temp.path / "model.yaml", [](const Mission& mission, std::ostream& out) { out << sensor_model_yaml(mission.model); }, m);
-  write_file(temp.path / "import-command.txt", [](const Mission& mission, std::ostream& out) {
+  fs::create_directory(target, ec);
+  if (ec) throw FormatError(folder + ": cannot create the folder: " + ec.message());
+  write_file(target / "nav.csv", write_nav_csv, m);
+  write_file(target / "gps.csv", write_gps_csv, m);
+  write_file(target / "marks.csv", write_marks_csv, m);
+  if (m.has_truth()) write_file(target / "truth.csv", write_truth_csv, m);
+  if (!m.truth_mines.empty()) write_file(target / "truth_mines.csv", write_truth_mines_csv, m);
+  write_file(target / "model.yaml", [](const Mission& mission, std::ostream& out) { out << sensor_model_yaml(mission.model); }, m);
+  write_file(target / "import-command.txt", [](const Mission& mission, std::ostream& out) {
     out << "gesmi";
     for (const std::string& a : import_arguments(mission, "mission.h5")) out << ' ' << a;
     out << '\n';
   }, m);
-  fs::rename(temp.path, target, ec);  // replaces an empty folder
-  if (ec) throw FormatError(folder + ": cannot write: " + ec.message());
-  temp.keep = true;
 }
 
 }  // namespace gesmi::io

@@ -13,9 +13,13 @@ namespace {
 static_assert(std::is_same_v<hid_t, std::int64_t>, "HDF5 handles are expected to be 64-bit");
 
 // HDF5 prints its error stack on every failure unless told not to; gesmi reports
-// failures itself, in one line.
+// failures itself, in one line. And HDF5's exit handler flushes every file still
+// open: after a failed write (a full disk) that file cannot be flushed and HDF5
+// 1.10 crashes in H5F__close_cb at exit, so gesmi closes its files itself and turns
+// the handler off (before any other HDF5 call, as H5dont_atexit requires).
 void silence_hdf5() {
   static const bool done = [] {
+    H5dont_atexit();
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     return true;
   }();

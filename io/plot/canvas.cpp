@@ -102,7 +102,7 @@ void Canvas::save_png(const std::string& path) {
   AtomicOutput out(path);
   cairo_surface_flush(surface_);
   if (cairo_surface_write_to_png(surface_, out.temp_path().c_str()) != CAIRO_STATUS_SUCCESS)
-    throw FormatError(path + ": cannot write the PNG picture");
+    throw FormatError(path + ": cannot write the PNG picture (disk full?)");
   out.commit();
 }
 

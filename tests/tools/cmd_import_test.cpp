@@ -50,16 +50,22 @@ TEST(CmdImport, MarksReplaceTheTableAndMayGrowTheMineCountOnRequest) {
   CommandResult r = run_gesmi({"import", "marks", folder + "/marks.csv", "--into", mission, "-o", folder + "/out.h5"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("mine: unknown mine 2: the mission has no mines"), std::string::npos) << r.err;
-  r = run_gesmi({"import", "marks", folder + "/marks.csv", "--into", mission, "--mines", "3", "-o", mission});  // in place
+  // Writing over the input is refused (the same file, whatever the path says), the input intact.
+  r = run_gesmi({"import", "marks", folder + "/marks.csv", "--into", mission, "--mines", "3", "-o", folder + "/./sim.h5"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("is also an input of this command"), std::string::npos) << r.err;
+  EXPECT_EQ(io::read_mission(mission).mine_count, 0);
+  const std::string updated = folder + "/updated.h5";
+  r = run_gesmi({"import", "marks", folder + "/marks.csv", "--into", mission, "--mines", "3", "-o", updated});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  Mission m = io::read_mission(mission);
+  Mission m = io::read_mission(updated);
   EXPECT_EQ(m.mine_count, 3);
   EXPECT_EQ(m.mark_time, (std::vector<double>{10.0, 20.0}));
   EXPECT_EQ(m.mark_range, (std::vector<double>{30.0, 45.0}));
   // Replacing again with an empty table.
   write(folder + "/none.csv", "time,mine,range,side\n");
-  ASSERT_EQ(run_gesmi({"import", "marks", folder + "/none.csv", "--into", mission, "-o", mission}).exit_code, 0);
-  EXPECT_EQ(io::read_mission(mission).mark_count(), 0u);
+  ASSERT_EQ(run_gesmi({"import", "marks", folder + "/none.csv", "--into", updated, "-o", folder + "/empty.h5"}).exit_code, 0);
+  EXPECT_EQ(io::read_mission(folder + "/empty.h5").mark_count(), 0u);
 }
 
 TEST(CmdImport, MarksOnASimulatedMissionDropThePerMarkTruth) {

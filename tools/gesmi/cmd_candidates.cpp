@@ -2,9 +2,11 @@
 
 #include <cstdio>
 
+#include "io/output_set.h"
 #include "io/atomic_output.h"
 #include "io/result_file.h"
 #include "solver/network/look_again.h"
+#include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 
 namespace gesmi::cli {
@@ -20,7 +22,8 @@ int run_candidates(std::span<const std::string> args) {
   positional.add("result", 1);
   po::variables_map v;
   if (!parse_options(args, options, positional, v, "gesmi candidates RESULT.h5 [--csv OUT.csv]")) return kExitOk;
-  if (v.count("csv")) io::check_writable_target(v["csv"].as<std::string>());
+  io::OutputSet outputs(input_files(v, {"result"}));
+  if (v.count("csv")) outputs.check(v["csv"].as<std::string>());
   const io::SolveResult r = io::read_result(v["result"].as<std::string>());
   const std::vector<LookAgainWindow> windows = look_again_windows(r.waterfall, r.time, r.mark_time, r.candidates);
   std::string csv = "mine,t_start,t_end,range_lo,range_hi\n";
@@ -32,7 +35,11 @@ int run_candidates(std::span<const std::string> args) {
     std::printf("%-5d %10.1f %10.1f %9.2f %9.2f\n", w.mine, w.t_start, w.t_end, w.range_lo, w.range_hi);
   }
   if (windows.empty()) std::printf("no window: every place a mine can be on the swath has a mark\n");
-  if (v.count("csv")) io::write_text_file(v["csv"].as<std::string>(), csv);
+  if (v.count("csv")) {
+    io::write_text_file(v["csv"].as<std::string>(), csv);
+    outputs.commit();
+    std::printf("wrote %s\n", v["csv"].as<std::string>().c_str());
+  }
   return kExitOk;
 }
 

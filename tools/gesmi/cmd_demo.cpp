@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "io/output_set.h"
 #include "io/result_file.h"
 #include "tools/gesmi/cli_args.h"
 
@@ -35,9 +36,9 @@ int run_demo(std::span<const std::string> args) {
   const std::string dir = v["output"].as<std::string>();
   const long long seed = parse_integer("--seed", v["seed"].as<std::string>());
   if (seed < 0) throw UsageError("--seed: must be >= 0");
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw UsageError("-o: cannot create folder " + dir + ": " + ec.message());
+  // One set over the whole demo: a step that fails removes what the earlier ones wrote.
+  io::OutputSet outputs;
+  outputs.prepare_folder(dir);
   const std::string mission = dir + "/mission.h5", result = dir + "/result.h5";
 
   const auto start = std::chrono::steady_clock::now();
@@ -58,6 +59,7 @@ int run_demo(std::span<const std::string> args) {
     std::printf("mine %zu box: %.1f m (north) x %.1f m (east) x %.1f m (down)\n", i, m[0].width(), m[1].width(),
                 m[2].width());
   }
+  outputs.commit();
   std::printf("files in %s/: mission.h5 result.h5 result.envelope.png waterfall.png result.mines.csv result.geojson\n",
               dir.c_str());
   return solved;

@@ -3,10 +3,12 @@
 
 #include <cstdio>
 
+#include "io/output_set.h"
 #include "io/atomic_output.h"
 #include "io/export_csv.h"
 #include "io/export_gesmi_txt.h"
 #include "io/mission_file.h"
+#include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 
 namespace gesmi::cli {
@@ -27,19 +29,23 @@ int run_export(std::span<const std::string> args) {
     return kExitOk;
   const std::string format = v["format"].as<std::string>(), output = v["output"].as<std::string>();
   if (format != "csv" && format != "gesmi-txt") throw UsageError("--format: expected csv or gesmi-txt, got '" + format + "'");
+  io::OutputSet outputs(input_files(v, {"mission"}));
   if (format == "csv")
     io::check_export_folder(output);
   else
-    io::check_writable_target(output);
+    outputs.check(output);
   const Mission m = io::read_mission(v["mission"].as<std::string>());
   if (format == "csv") {
+    outputs.prepare_folder(output);
     io::export_mission_csv(m, output);
+    outputs.commit();
     std::printf("wrote %s/: nav.csv (%zu rows), gps.csv (%zu), marks.csv (%zu)%s%s, model.yaml, import-command.txt\n",
                 output.c_str(), m.size(), m.gps_time.size(), m.mark_count(), m.has_truth() ? ", truth.csv" : "",
                 m.truth_mines.empty() ? "" : ", truth_mines.csv");
     return kExitOk;
   }
   io::export_gesmi_txt(m, output);
+  outputs.commit();
   std::printf("wrote %s: %zu rows, %zu position fixes (marks are not part of the GESMI text format)\n", output.c_str(),
               m.size(), m.gps_time.size());
   return kExitOk;

@@ -3,9 +3,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/output_set.h"
 #include "io/atomic_output.h"
 #include "io/import_mission.h"
 #include "io/mission_file.h"
+#include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 
 namespace gesmi::cli {
@@ -53,11 +55,13 @@ int import_marks(std::span<const std::string> args) {
   if (!parse_options(args, options, positional, v, "gesmi import marks FILE.csv --into MISSION.h5 [--mines K] -o OUT.h5"))
     return kExitOk;
   const std::string output = v["output"].as<std::string>();
-  io::check_writable_target(output);
+  io::OutputSet outputs(input_files(v, {"marks", "into"}));
+  outputs.check(output);
   const std::optional<int> mines = parse_mines(v);
   Mission m = io::read_mission(v["into"].as<std::string>());
   io::import_marks(m, v["marks"].as<std::string>(), mines);
   io::write_mission(m, output);
+  outputs.commit();
   print_summary(m, output);
   return kExitOk;
 }
@@ -82,7 +86,8 @@ int import_nav(std::span<const std::string> args) {
                      "[--config bounds.yaml] [--mines K] [--truth truth.csv] [--truth-mines truth_mines.csv] -o OUT.h5"))
     return kExitOk;
   const std::string output = v["output"].as<std::string>();
-  io::check_writable_target(output);
+  io::OutputSet outputs(input_files(v, {"nav", "gps", "marks", "config", "truth", "truth-mines"}));
+  outputs.check(output);
   io::ImportInputs inputs;
   inputs.gps = optional_path(v, "gps");
   inputs.marks = optional_path(v, "marks");
@@ -93,6 +98,7 @@ int import_nav(std::span<const std::string> args) {
   inputs.mines = parse_mines(v);
   const Mission m = io::import_nav(v["nav"].as<std::string>(), inputs);
   io::write_mission(m, output);
+  outputs.commit();
   print_summary(m, output);
   return kExitOk;
 }
@@ -117,7 +123,8 @@ int import_gesmi_txt(std::span<const std::string> args) {
   const std::string xy = v["xy"].as<std::string>();
   if (xy != "fixes" && xy != "truth") throw UsageError("--xy: expected fixes or truth, got '" + xy + "'");
   const std::string output = v["output"].as<std::string>();
-  io::check_writable_target(output);
+  io::OutputSet outputs(input_files(v, {"log", "marks", "config"}));
+  outputs.check(output);
   io::ImportInputs inputs;
   inputs.marks = optional_path(v, "marks");
   inputs.config = optional_path(v, "config");
@@ -125,6 +132,7 @@ int import_gesmi_txt(std::span<const std::string> args) {
   inputs.mines = parse_mines(v);
   const Mission m = io::import_gesmi_txt(v["log"].as<std::string>(), xy == "fixes" ? io::GesmiXy::fixes : io::GesmiXy::truth, inputs);
   io::write_mission(m, output);
+  outputs.commit();
   print_summary(m, output);
   return kExitOk;
 }

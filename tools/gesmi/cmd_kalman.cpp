@@ -4,10 +4,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/output_set.h"
 #include "io/atomic_output.h"
 #include "io/kalman_result.h"
 #include "io/mission_file.h"
 #include "io/sensor_model_yaml.h"
+#include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/json_writer.h"
 
@@ -40,7 +42,8 @@ int run_kalman(std::span<const std::string> args) {
   o.iterations = static_cast<int>(iterations);
   if (const std::string why = o.validate(); !why.empty()) throw UsageError("--noise-factor: " + why);
   const std::string output = v["output"].as<std::string>();
-  io::check_writable_target(output);
+  io::OutputSet outputs(input_files(v, {"mission", "config"}));
+  outputs.check(output);
 
   io::KalmanFile file;
   auto start = Clock::now();
@@ -57,6 +60,7 @@ int run_kalman(std::span<const std::string> args) {
   file.options = o;
   start = Clock::now();
   io::write_kalman_result(file, output);
+  outputs.commit();
   file.timings_ms["write"] = elapsed_ms(start);
   if (v.count("stats")) {
     std::string json = "{\"steps\": " + std::to_string(mission.size()) + ", \"mines\": " + std::to_string(mission.mine_count) +

@@ -8,9 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "io/output_set.h"
 #include "io/localization_output.h"
 #include "io/localization_scenario.h"
 #include "solver/setinv/measurement_simulator.h"
+#include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 
 namespace gesmi::cli {
@@ -74,9 +76,12 @@ int run_localize(std::span<const std::string> args) {
   if (values.count("simulate")) return simulate(problem, values);
   if (!values.count("output")) throw UsageError(std::string("missing -o OUT_DIR; usage: ") + kUsage);
   const std::string folder = values["output"].as<std::string>();
+  io::OutputSet outputs(input_files(values, {"scenario"}));
   io::check_output_folder(folder);
   const LocalizationResult result = localize(problem);
+  outputs.prepare_folder(folder);
   io::write_localization_outputs(folder, problem, result);
+  outputs.commit();
   if (!values.count("quiet")) std::fputs(io::localization_summary(problem, result).c_str(), stdout);
   return result.found ? kExitOk : kExitInconsistent;
 }

@@ -3,8 +3,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/output_set.h"
 #include "io/atomic_output.h"
 #include "io/mission_file.h"
+#include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 
 namespace gesmi::cli {
@@ -56,7 +58,8 @@ int add_mark(std::span<const std::string> args) {
   const std::string side = v["side"].as<std::string>(), mine_text = v["mine"].as<std::string>();
   if (side != "starboard" && side != "port") throw UsageError("--side: expected starboard or port, got '" + side + "'");
   const std::string output = v["output"].as<std::string>();
-  io::check_writable_target(output);
+  io::OutputSet outputs(input_files(v, {"mission"}));
+  outputs.check(output);
   Mission m = io::read_mission(v["mission"].as<std::string>());
   if (!std::isfinite(time) || time < m.time.front() || time > m.time.back())
     throw UsageError("--time: " + v["time"].as<std::string>() + " s is outside the mission [" +
@@ -82,6 +85,7 @@ int add_mark(std::span<const std::string> args) {
   if (!m.truth_marks_outlier.empty()) m.truth_marks_outlier.push_back(0);
   if (!m.truth_marks_mine.empty()) m.truth_marks_mine.push_back(-1);
   io::write_mission(m, output);
+  outputs.commit();
   std::printf("added mark %zu (t = %.1f s, mine %s, range %.2f m, %s); %s has %zu marks\n", m.mark_count() - 1, time,
               mine < 0 ? "?" : std::to_string(mine).c_str(), range, side.c_str(), output.c_str(), m.mark_count());
   return kExitOk;
@@ -97,7 +101,8 @@ int remove_mark(std::span<const std::string> args) {
   po::variables_map v;
   if (!parse_options(args, options, positional, v, "gesmi marks remove MISSION.h5 INDEX -o OUT.h5")) return kExitOk;
   const std::string output = v["output"].as<std::string>();
-  io::check_writable_target(output);
+  io::OutputSet outputs(input_files(v, {"mission"}));
+  outputs.check(output);
   Mission m = io::read_mission(v["mission"].as<std::string>());
   const long long index = parse_integer("INDEX", v["index"].as<std::string>());
   if (index < 0 || static_cast<std::size_t>(index) >= m.mark_count())
@@ -111,6 +116,7 @@ int remove_mark(std::span<const std::string> args) {
   if (!m.truth_marks_outlier.empty()) m.truth_marks_outlier.erase(m.truth_marks_outlier.begin() + at);
   if (!m.truth_marks_mine.empty()) m.truth_marks_mine.erase(m.truth_marks_mine.begin() + at);
   io::write_mission(m, output);
+  outputs.commit();
   std::printf("removed mark %lld; %s has %zu marks\n", index, output.c_str(), m.mark_count());
   return kExitOk;
 }

@@ -2,11 +2,13 @@
 
 #include <cstdio>
 
+#include "io/output_set.h"
 #include "io/atomic_output.h"
 #include "io/geodesy.h"
 #include "io/mission_file.h"
 #include "io/sensor_model_yaml.h"
 #include "solver/sim/simulator.h"
+#include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 
 namespace gesmi::cli {
@@ -55,7 +57,8 @@ int run_simulate(std::span<const std::string> args) {
   o.outliers = static_cast<int>(parse_integer("--outliers", v["outliers"].as<std::string>()));
   if (const std::string why = o.validate(); !why.empty()) throw UsageError(why);
   const std::string output = v["output"].as<std::string>();
-  io::check_writable_target(output);
+  io::OutputSet outputs(input_files(v, {"config"}));
+  outputs.check(output);
 
   SensorModel model;
   if (v.count("config")) io::merge_sensor_model_yaml(v["config"].as<std::string>(), model);
@@ -63,6 +66,7 @@ int run_simulate(std::span<const std::string> args) {
   mission.origin = {48.212920614, -4.458227931};  // the reference start fix
   io::set_geodetic_gps(mission);
   io::write_mission(mission, output);
+  outputs.commit();
   std::printf("wrote %s: %zu samples over %.1f s, %d mines, %zu marks (%zu missed, %d outliers)\n", output.c_str(),
               mission.size(), mission.time.back(), mission.mine_count, mission.mark_count(),
               mission.truth_missed_marks.size() / 3, o.outliers);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "io/output_set.h"
 #include "io/atomic_output.h"
 #include "io/io_version.h"
 #include "io/mission_digest.h"
@@ -17,6 +18,7 @@
 #include "io/sensor_model_yaml.h"
 #include "solver/network/incremental_solver.h"
 #include "solver/network/outlier_solver.h"
+#include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/json_writer.h"
 #include "tools/gesmi/progress.h"
@@ -108,6 +110,12 @@ void solve_with_outlier_search(Run& run, const OutlierOptions& outliers, const S
   if (r.consistent()) {
     run.report.converged = true;
     run.report.sweeps = r.full_solves;
+  } else if (run.report.inconsistency) {
+    run.report.inconsistency->message = "more than " + std::to_string(o.max_outliers) + " of the " +
+                                        (o.trust_fixes ? "marks" : "marks and GPS fixes") +
+                                        " are wrong (removing any " + std::to_string(o.max_outliers) +
+                                        " of them leaves the data inconsistent); with all the data: " +
+                                        run.report.inconsistency->message;
   }
   run.minimal_outliers = r.minimal_outliers;
   run.mode = o.mode == OutlierMode::relaxed ? "outliers" : "minimal-outliers";
@@ -210,7 +218,12 @@ int run_solve(std::span<const std::string> args) {
   if (v.count("from") && max_outliers >= 0) throw UsageError("--from and --max-outliers cannot be combined");
   const bool stats = v.count("stats") > 0;
   const std::string output = v["output"].as<std::string>();
-  io::check_writable_target(output);
+  io::OutputSet outputs(input_files(v, {"mission", "config", "from"}));
+  outputs.check(output);
+  for (const char* suffix : {".mines.csv", ".geojson", ".envelope.png"}) {
+    outputs.check(sibling(output, suffix));
+    outputs.owns(sibling(output, suffix));
+  }
 
   std::map<std::string, double> timings;
   auto start = Clock::now();
@@ -305,6 +318,7 @@ int run_solve(std::span<const std::string> args) {
   picture.title = "gesmi envelope: " + std::filesystem::path(v["mission"].as<std::string>()).filename().string() +
                   (result.consistent ? "" : " (INCONSISTENT)");
   io::write_envelope_png(picture, sibling(output, ".envelope.png"));
+  outputs.commit();
   timings["write"] = elapsed_ms(start);
 
   if (stats) {

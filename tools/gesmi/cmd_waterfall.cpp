@@ -3,10 +3,12 @@
 
 #include <cstdio>
 
+#include "io/output_set.h"
 #include "io/atomic_output.h"
 #include "io/plot/plot_waterfall.h"
 #include "io/result_file.h"
 #include "solver/network/look_again.h"
+#include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 
 namespace gesmi::cli {
@@ -26,7 +28,8 @@ int run_waterfall(std::span<const std::string> args) {
   const double max_range = parse_non_negative("--max-range", v["max-range"].as<std::string>());
   if (!(max_range > 0.0) || !std::isfinite(max_range)) throw UsageError("--max-range: must be a positive number");
   const std::string output = v["output"].as<std::string>();
-  io::check_writable_target(output);
+  io::OutputSet outputs(input_files(v, {"result"}));
+  outputs.check(output);
   const io::SolveResult r = io::read_result(v["result"].as<std::string>());
   io::WaterfallPicture picture;
   picture.waterfall = &r.waterfall;
@@ -40,6 +43,7 @@ int run_waterfall(std::span<const std::string> args) {
   picture.title = "reconstructed waterfall" + std::string(r.consistent ? "" : " (INCONSISTENT result)") +
                   ": grey = where each mine can appear, dots = marks, orange = look again";
   io::write_waterfall_png(picture, output);
+  outputs.commit();
   std::printf("wrote %s (%d mines, %zu marks, %zu windows to look at again)\n", output.c_str(), r.mine_count,
               r.mark_time.size(), picture.windows.size());
   return kExitOk;
