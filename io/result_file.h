@@ -1,8 +1,8 @@
 #pragma once
-// The solver's result file (docs/formats.md): tube, increments, mine boxes,
-// reconstructed waterfall, mark candidates and outliers, and attributes (status,
-// sweeps, timings, input digests, version). Written atomically; read back for warm
-// reruns and for `gesmi waterfall` / `gesmi candidates`.
+// The solver's result file (docs/formats.md): a MissionSolution (tube, increments,
+// mine boxes, reconstructed waterfall, mark table, candidates and outliers, status,
+// sweeps, timings) with the digests of its inputs and the gesmi version. Written
+// atomically; read back for warm reruns and for `gesmi waterfall` / `candidates`.
 //
 // Every dataset carries its SHA-256 and the root carries one over the attributes
 // and the dataset digests: read_result() refuses a result that differs from what
@@ -13,30 +13,15 @@
 #include <string>
 #include <vector>
 
-#include "solver/network/tube_domains.h"
-#include "solver/network/waterfall.h"
+#include "solver/solve/mission_solution.h"
 
 namespace gesmi::io {
 
+/// A result file: the solution and what proves which inputs it was computed from.
 struct SolveResult {
-  std::vector<double> time;
-  TubeDomains domains;                    // tube, increments, mines
-  Waterfall waterfall;
-  std::vector<double> mark_time, mark_range;  // the mark table the result was computed with
-  std::vector<std::int32_t> mark_mine;
-  std::vector<std::uint64_t> candidates;  // per mark row: candidate mines (bit i: mine i)
-  std::vector<std::int32_t> outlier;      // per mark row: 1 when every outlier hypothesis removes it
-  std::vector<std::int32_t> gps_outlier;  // per GPS fix
-  int mine_count = 0;
-  bool consistent = true;
-  std::string message;                    // the inconsistency, or empty
-  std::int64_t sweeps = 0;
-  bool converged = false;
-  std::int64_t minimal_outliers = 0;
-  std::map<std::string, double> timings_ms;
+  MissionSolution solution;
   std::string navigation_digest, bounds_digest, marks_digest;  // SHA-256 of the inputs (io/mission_digest.h)
-  std::int64_t mark_count = 0;            // rows of the mark table the result was computed with
-  std::string version;
+  std::string version;  // gesmi that wrote it
   /// Layout of the file read: 1 for results written before digests existed (readable,
   /// but unfit for a warm start), 2 today.
   std::int64_t format_version = 2;

@@ -9,7 +9,10 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "solver/network/constraint_ref.h"
 #include "solver/network/mission_network.h"
 #include "solver/network/tube_domains.h"
 
@@ -24,13 +27,23 @@ struct SolverOptions {
   std::string validate() const;
 };
 
-/// The first constraint that emptied a domain, with the inputs that feed it.
+/// The first constraint that emptied a domain, with the inputs that feed it, as
+/// data; describe() (inconsistency_text.h) words it for the operator.
 struct Inconsistency {
   enum class Kind { evolution, fix, detection } kind = Kind::evolution;
   std::size_t step = 0;      // sample index where it happened
   double time = 0.0;         // s
-  std::size_t source = 0;    // GPS row or mark row
-  std::string message;       // one line for the operator
+  std::optional<ConstraintRef> source;  // fix and detection: the GPS row or mark row
+  // evolution: the chain (0 north, 1 east, 2 down) that dead reckoning could not
+  // join, and the nearest fix or detection on each side (none: the start or end).
+  int axis = -1;
+  std::optional<ConstraintRef> before, after;
+  // fix: the fix box. detection: the mine tried (-1 when no candidate mine could
+  // explain the mark) and its box. Both: the tube at that time.
+  Vec3I fix_box, tube, mine_box;
+  int mine = -1;
+  /// detection without any possible mine: the distance from the tube to each candidate.
+  std::vector<std::pair<int, Interval>> candidate_distances;
 };
 
 struct SolverReport {

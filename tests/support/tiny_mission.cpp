@@ -111,6 +111,12 @@ TinyMission make_tiny_mission(std::uint64_t seed, TinyErrors errors) {
     fix.box[1] = Interval::around(m.truth_y[k] + error(model.gps_metres), model.gps_metres);
     fix.source_index = out.fixes.size();
     out.fixes.push_back(fix);
+    // The same fix in the mission, in the local frame, as io/ would fill it.
+    m.gps_time.push_back(fix.time);
+    m.gps_north.push_back(fix.box[0].mid());
+    m.gps_east.push_back(fix.box[1].mid());
+    m.gps_north_halfwidth.push_back(fix.box[0].rad());
+    m.gps_east_halfwidth.push_back(fix.box[1].rad());
   }
   return out;
 }

@@ -18,7 +18,7 @@ enum class TinyErrors { uniform, worst_case };
 
 struct TinyMission {
   Mission mission;
-  std::vector<PositionFix> fixes;  // GPS boxes in the local frame
+  std::vector<PositionFix> fixes;  // GPS boxes in the local frame (also in the mission's gps_north/east)
 };
 
 TinyMission make_tiny_mission(std::uint64_t seed, TinyErrors errors);

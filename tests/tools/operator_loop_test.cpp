@@ -72,7 +72,7 @@ std::vector<std::array<double, 3>> missed_marks(const std::string& mission) {
   return out;
 }
 
-double largest_difference(const io::SolveResult& a, const io::SolveResult& b) {
+double largest_difference(const MissionSolution& a, const MissionSolution& b) {
   double d = 0.0;
   const auto compare = [&](const std::vector<Interval>& x, const std::vector<Interval>& y) {
     for (std::size_t k = 0; k < x.size(); ++k) d = std::max({d, std::fabs(x[k].lo() - y[k].lo()), std::fabs(x[k].hi() - y[k].hi())});
@@ -106,7 +106,7 @@ TEST(OperatorLoop, WarmRerunAfterAddingMissedMarksEqualsAColdSolve) {
     expect_ok(warm);
     EXPECT_NE(warm.out.find("\"mode\": \"warm\""), std::string::npos) << warm.out;
     expect_ok(run_gesmi({"solve", current, "-o", dir + "/cold.h5"}));
-    EXPECT_LT(largest_difference(io::read_result(dir + "/warm.h5"), io::read_result(dir + "/cold.h5")), 1e-3);
+    EXPECT_LT(largest_difference(io::read_result(dir + "/warm.h5").solution, io::read_result(dir + "/cold.h5").solution), 1e-3);
   }
 }
 
@@ -134,7 +134,7 @@ TEST(OperatorLoop, MarksWithoutNumbersKeepTheirTrueMine) {
     const std::string mission = simulate(dir, {"--seed", seed, "--unassociated", "1"});
     expect_ok(run_gesmi({"solve", mission, "-o", dir + "/r.h5"}));
     const Mission m = io::read_mission(mission);
-    const io::SolveResult r = io::read_result(dir + "/r.h5", false);
+    const MissionSolution r = io::read_result(dir + "/r.h5", false).solution;
     // With every number removed the mines are only defined up to relabelling: the
     // solver labels them in order of first detection. Relabel the truth the same way.
     std::vector<std::size_t> order(m.mark_count());
@@ -193,13 +193,13 @@ TEST(OperatorLoop, OutlierTolerantSolveNamesTheInjectedMarks) {
     const CommandResult plain = run_gesmi({"solve", mission, "-o", dir + "/plain.h5"});
     EXPECT_EQ(plain.exit_code, 3) << plain.err;
     EXPECT_TRUE(fs::exists(dir + "/plain.h5"));  // written, marked inconsistent
-    EXPECT_FALSE(io::read_result(dir + "/plain.h5", false).consistent);
+    EXPECT_FALSE(io::read_result(dir + "/plain.h5", false).solution.report.consistent);
     expect_ok(run_gesmi({"solve", mission, "--max-outliers", "2", "-o", dir + "/r.h5"}));
-    const io::SolveResult r = io::read_result(dir + "/r.h5", false);
+    const MissionSolution r = io::read_result(dir + "/r.h5", false).solution;
     const Mission m = io::read_mission(mission);
-    EXPECT_EQ(r.minimal_outliers, std::stoi(n));
+    EXPECT_EQ(r.report.minimal_outliers, std::stoi(n));
     for (std::size_t j = 0; j < m.mark_count(); ++j)
-      if (r.outlier[j]) {
+      if (r.mark_outlier[j]) {
         EXPECT_EQ(m.truth_marks_outlier[j], 1) << "mark " << j << " wrongly named";
       }
     for (std::size_t k = 0; k < m.size(); ++k) {

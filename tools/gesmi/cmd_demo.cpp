@@ -49,9 +49,10 @@ int run_demo(std::span<const std::string> args) {
   if (const int code = run_command("waterfall", {result, "-o", dir + "/waterfall.png"})) return code;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const io::SolveResult r = io::read_result(result, false);
+  const io::SolveResult file = io::read_result(result, false);
+  const MissionSolution& r = file.solution;
   std::printf("\nsummary: %s, %lld sweeps, propagation %.1f ms, whole demo %.1f s\n",
-              r.consistent ? "consistent" : "INCONSISTENT", static_cast<long long>(r.sweeps),
+              r.report.consistent ? "consistent" : "INCONSISTENT", static_cast<long long>(r.report.sweeps),
               r.timings_ms.count("propagate") ? r.timings_ms.at("propagate") : 0.0, seconds);
   std::printf("largest horizontal tube width: %.1f m\n", r.domains.max_horizontal_width());
   for (std::size_t i = 0; i < r.domains.mines.size(); ++i) {

@@ -30,7 +30,8 @@ int run_waterfall(std::span<const std::string> args) {
   const std::string output = v["output"].as<std::string>();
   io::OutputSet outputs(input_files(v, {"result"}));
   outputs.check(output);
-  const io::SolveResult r = io::read_result(v["result"].as<std::string>());
+  const io::SolveResult file = io::read_result(v["result"].as<std::string>());
+  const MissionSolution& r = file.solution;
   io::WaterfallPicture picture;
   picture.waterfall = &r.waterfall;
   picture.time = r.time;
@@ -40,7 +41,7 @@ int run_waterfall(std::span<const std::string> args) {
       if (r.candidates[j] >> i & 1) picture.marks.push_back({r.mark_time[j], r.mark_range[j], i});
   for (const LookAgainWindow& w : look_again_windows(r.waterfall, r.time, r.mark_time, r.candidates))
     picture.windows.push_back({w.mine, w.t_start, w.t_end, w.range_lo, w.range_hi});
-  picture.title = "reconstructed waterfall" + std::string(r.consistent ? "" : " (INCONSISTENT result)") +
+  picture.title = "reconstructed waterfall" + std::string(r.report.consistent ? "" : " (INCONSISTENT result)") +
                   ": grey = where each mine can appear, dots = marks, orange = look again";
   io::write_waterfall_png(picture, output);
   outputs.commit();

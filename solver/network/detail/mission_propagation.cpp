@@ -29,30 +29,22 @@ Inconsistency MissionPropagation::evolution_failure(int axis, std::size_t k, boo
   inc.kind = Inconsistency::Kind::evolution;
   inc.step = k;
   inc.time = net_.time[k];
+  inc.axis = axis;
+  // The nearest fix or detection on each side of the step: they, or the navigation
+  // bounds between them, are what to check.
   const std::size_t boundary = forward ? k : k + 1;  // constraints at >= boundary are "after"
-  std::string before, after;
   double before_time = -kInf, after_time = kInf;
-  const auto consider = [&](std::size_t at_k, double t, const std::string& name) {
+  const auto consider = [&](std::size_t at_k, double t, ConstraintRef ref) {
     if (at_k < boundary && t > before_time) {
       before_time = t;
-      before = name;
+      inc.before = ref;
     } else if (at_k >= boundary && t < after_time) {
       after_time = t;
-      after = name;
+      inc.after = ref;
     }
   };
-  for (const Anchor& a : net_.anchors)
-    consider(a.at.k, a.fix.time, "GPS fix " + std::to_string(a.fix.source_index) + " at t = " + format_time(a.fix.time));
-  for (const Detection& d : net_.detections)
-    consider(d.at.k, d.time, detection_head(d, d.mine >= 0 ? std::to_string(d.mine) : "?"));
-  std::string what = "dead reckoning cannot join the " + std::string(kAxisNames[axis]) + " positions allowed before and after t = " +
-                     format_time(inc.time);
-  if (!before.empty() || !after.empty())
-    what += ": between " + (before.empty() ? std::string("the start") : before) + " and " +
-            (after.empty() ? std::string("the end") : after);
-  if (axis == 2) what += "; the barometer bounds the depth there";
-  what += " (one of them, or the DVL/gyrocompass bounds, is wrong)";
-  inc.message = what;
+  for (const Anchor& a : net_.anchors) consider(a.at.k, a.fix.time, ConstraintRef::gps_fix(a.fix.source_index));
+  for (const Detection& d : net_.detections) consider(d.at.k, d.time, ConstraintRef::mark(d.mark));
   return inc;
 }
 
@@ -75,11 +67,9 @@ bool MissionPropagation::anchor(const Anchor& a, double& move, std::optional<Inc
     inc.kind = Inconsistency::Kind::fix;
     inc.step = a.at.k;
     inc.time = a.fix.time;
-    inc.source = a.fix.source_index;
-    inc.message = "GPS fix " + std::to_string(a.fix.source_index) + " at t = " + format_time(a.fix.time) +
-                  " (north " + format_interval(a.fix.box[0]) + ", east " + format_interval(a.fix.box[1]) +
-                  ") is outside the tube there (north " + format_interval(before[0]) + ", east " +
-                  format_interval(before[1]) + ")";
+    inc.source = ConstraintRef::gps_fix(a.fix.source_index);
+    inc.fix_box = a.fix.box;
+    inc.tube = before;
     failure = inc;
     return false;
   }
@@ -149,23 +139,15 @@ bool MissionPropagation::detection(std::size_t j, double& move, std::optional<In
   return true;
 }
 
-std::string MissionPropagation::detection_head(const Detection& det, const std::string& mine) const {
-  return "detection " + std::to_string(det.mark) + " at t = " + format_time(det.time) + " (mine " + mine + ", range " +
-         fixed(det.measured_range, 2) + " m, " + (det.side > 0 ? "starboard" : "port") + ")";
-}
-
 Inconsistency MissionPropagation::unexplained_failure(const Detection& det, const Vec3I& q) const {
   Inconsistency inc;
   inc.kind = Inconsistency::Kind::detection;
   inc.step = det.at.k;
   inc.time = det.time;
-  inc.source = det.mark;
-  std::string distances;
+  inc.source = ConstraintRef::mark(det.mark);
+  inc.tube = q;
   for (int i = 0; i < net_.mine_count; ++i)
-    if (det.allowed >> i & 1)
-      distances += (distances.empty() ? "" : ", ") + std::string("mine ") + std::to_string(i) + " " +
-                   format_interval(box_distance(q, d_.mines[static_cast<std::size_t>(i)]));
-  inc.message = detection_head(det, "?") + ": no mine can explain it (distances from the tube, m: " + distances + ")";
+    if (det.allowed >> i & 1) inc.candidate_distances.emplace_back(i, box_distance(q, d_.mines[static_cast<std::size_t>(i)]));
   return inc;
 }
 
@@ -174,18 +156,10 @@ Inconsistency MissionPropagation::detection_failure(const Detection& det, int mi
   inc.kind = Inconsistency::Kind::detection;
   inc.step = det.at.k;
   inc.time = det.time;
-  inc.source = det.mark;
-  const std::string head = detection_head(det, det.mine >= 0 ? std::to_string(det.mine) : "? -> " + std::to_string(mine));
-  const Interval distance = box_distance(q, m);
-  std::string why;
-  if (!distance.intersects(det.range))
-    why = ": range " + format_interval(det.range) + " m cannot be reached, the distance from the tube to mine " +
-          std::to_string(mine) + " is within " + format_interval(distance) + " m";
-  else
-    why = ": mine " + std::to_string(mine) + " cannot lie in the " + (det.side > 0 ? "starboard" : "port") +
-          " sonar plane below the robot at that range (tube north " + format_interval(q[0]) + ", east " +
-          format_interval(q[1]) + "; mine box north " + format_interval(m[0]) + ", east " + format_interval(m[1]) + ")";
-  inc.message = head + why;
+  inc.source = ConstraintRef::mark(det.mark);
+  inc.mine = mine;
+  inc.tube = q;
+  inc.mine_box = m;
   return inc;
 }
 }  // namespace gesmi::detail

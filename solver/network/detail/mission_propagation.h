@@ -13,12 +13,10 @@
 
 #include "solver/network/mission_network.h"
 #include "solver/network/mission_solver.h"
-#include "solver/network/detail/text.h"
 #include "solver/tube/chain_sweep.h"
 
 namespace gesmi::detail {
 
-inline const char* const kAxisNames[] = {"north", "east", "down"};
 
 inline double largest_move(const Vec3I& before, const Vec3I& after) {
   double move = 0.0;
@@ -64,8 +62,6 @@ class MissionPropagation {
   // and the tube keeps the hull of what the others allow (mine boxes are narrowed
   // only once a single candidate is left).
   bool detection(std::size_t j, double& move, std::optional<Inconsistency>& failure);
-
-  std::string detection_head(const Detection& det, const std::string& mine) const;
 
   Inconsistency unexplained_failure(const Detection& det, const Vec3I& q) const;
 

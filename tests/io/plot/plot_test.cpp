@@ -8,7 +8,7 @@
 #include "io/format_error.h"
 #include "io/plot/plot_envelope.h"
 #include "io/plot/plot_waterfall.h"
-#include "solver/network/mission_solver.h"
+#include "solver/solve/solve_mission.h"
 #include "tests/support/run_command.h"
 #include "tests/support/tiny_mission.h"
 
@@ -24,12 +24,7 @@ bool is_png(const std::string& path) {
 
 struct Solved {
   test::TinyMission tiny = test::make_tiny_mission(8, test::TinyErrors::uniform);
-  TubeDomains domains;
-  Solved() {
-    const MissionNetwork net = build_network(tiny.mission, tiny.mission.model, tiny.fixes);
-    domains = initial_domains(tiny.mission, tiny.mission.model, net);
-    solve(net, domains);
-  }
+  TubeDomains domains = solve_mission(tiny.mission).domains;
 };
 
 TEST(Plot, WritesTheEnvelopeAndTheWaterfallAsPng) {

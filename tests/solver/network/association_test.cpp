@@ -5,31 +5,18 @@
 
 #include <bit>
 
-#include "solver/network/mission_solver.h"
+#include "solver/solve/solve_mission.h"
 #include "tests/support/tiny_mission.h"
 
 namespace gesmi {
 namespace {
 
-struct Solved {
-  MissionNetwork net;
-  TubeDomains domains;
-  SolverReport report;
-};
-
-Solved run(const test::TinyMission& t) {
-  Solved r{build_network(t.mission, t.mission.model, t.fixes), {}, {}};
-  r.domains = initial_domains(t.mission, t.mission.model, r.net);
-  r.report = solve(r.net, r.domains);
-  return r;
-}
-
 TEST(Association, AnUnnumberedMarkOfTheOnlyMineIsDecided) {
   test::TinyMission t = test::make_tiny_mission(2, test::TinyErrors::uniform);
   t.mission.mark_mine = {-1, -1};
-  const Solved r = run(t);
-  ASSERT_TRUE(r.report.consistent());
-  for (const std::uint64_t c : r.domains.candidates) EXPECT_EQ(c, 1u);
+  const MissionSolution r = solve_mission(t.mission);
+  ASSERT_TRUE(r.report.consistent);
+  for (const std::uint64_t c : r.candidates) EXPECT_EQ(c, 1u);
   EXPECT_TRUE(r.domains.mines[0][0].contains(t.mission.truth_mines[0]));
   EXPECT_LT(r.domains.mines[0][0].width(), 30.0);
 }
@@ -38,10 +25,10 @@ TEST(Association, KeepsBothMinesWhenAnUnseenMineCouldExplainTheMark) {
   test::TinyMission t = test::make_tiny_mission(3, test::TinyErrors::uniform);
   t.mission.mine_count = 2;  // a second mine, never labelled, anywhere
   t.mission.mark_mine = {0, -1};
-  const Solved r = run(t);
-  ASSERT_TRUE(r.report.consistent());
-  EXPECT_EQ(r.domains.candidates[0], 1u);
-  EXPECT_EQ(r.domains.candidates[1], 3u);  // mine 0 (true) or mine 1: undecidable, both kept
+  const MissionSolution r = solve_mission(t.mission);
+  ASSERT_TRUE(r.report.consistent);
+  EXPECT_EQ(r.candidates[0], 1u);
+  EXPECT_EQ(r.candidates[1], 3u);  // mine 0 (true) or mine 1: undecidable, both kept
 }
 
 TEST(Association, DropsAMineThatCannotBeAtThatRange) {
@@ -50,10 +37,10 @@ TEST(Association, DropsAMineThatCannotBeAtThatRange) {
   t.mission.mine_count = 2;
   t.mission.mark_mine = {1, -1};
   t.mission.mark_range[0] = 70.0;  // consistent only with a mine 70 m away at t0
-  const Solved r = run(t);
-  ASSERT_TRUE(r.report.consistent()) << r.report.inconsistency->message;
-  EXPECT_EQ(std::popcount(r.domains.candidates[1]), 1);
-  EXPECT_EQ(r.domains.candidates[1], 1u);  // mine 0: the unseen one, by symmetry breaking
+  const MissionSolution r = solve_mission(t.mission);
+  ASSERT_TRUE(r.report.consistent) << r.report.message;
+  EXPECT_EQ(std::popcount(r.candidates[1]), 1);
+  EXPECT_EQ(r.candidates[1], 1u);  // mine 0: the unseen one, by symmetry breaking
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "solver/solve/solve_mission.h"
 #include "tests/support/tiny_mission.h"
+#include "tests/support/truth_checks.h"
 
 namespace gesmi {
 namespace {
@@ -13,32 +15,6 @@ namespace {
 using test::make_tiny_mission;
 using test::TinyErrors;
 using test::TinyMission;
-
-struct Solved {
-  TubeDomains domains;
-  SolverReport report;
-};
-
-Solved solve_mission(const TinyMission& t, SolverOptions options = {}) {
-  const MissionNetwork net = build_network(t.mission, t.mission.model, t.fixes);
-  Solved s{initial_domains(t.mission, t.mission.model, net), {}};
-  s.report = solve(net, s.domains, options);
-  return s;
-}
-
-void expect_truth_inside(const TinyMission& t, const TubeDomains& d) {
-  const Mission& m = t.mission;
-  int outside = 0;
-  for (std::size_t k = 0; k < m.size(); ++k) {
-    const bool in = d.px[k].contains(m.truth_x[k]) && d.py[k].contains(m.truth_y[k]) && d.pz[k].contains(m.truth_z[k]);
-    if (!in && outside++ < 5) ADD_FAILURE() << "truth outside the tube at k = " << k;
-  }
-  EXPECT_EQ(outside, 0);
-  for (int i = 0; i < m.mine_count; ++i)
-    for (int c = 0; c < 3; ++c)
-      EXPECT_TRUE(d.mines[static_cast<std::size_t>(i)][c].contains(m.truth_mines[static_cast<std::size_t>(3 * i + c)]))
-          << "mine " << i << " axis " << c;
-}
 
 TEST(MissionSolver, TinyMissionHasTwoDetections) {
   const TinyMission t = make_tiny_mission(1, TinyErrors::uniform);
@@ -50,10 +26,10 @@ TEST(MissionSolver, TruthStaysInsideTheTubeAndTheMineBox) {
     for (std::uint64_t seed : {1u, 2u, 3u}) {
       SCOPED_TRACE(::testing::Message() << "seed " << seed << (errors == TinyErrors::uniform ? " uniform" : " worst"));
       const TinyMission t = make_tiny_mission(seed, errors);
-      const Solved s = solve_mission(t);
-      ASSERT_TRUE(s.report.consistent()) << s.report.inconsistency->message;
+      const MissionSolution s = solve_mission(t.mission);
+      ASSERT_TRUE(s.report.consistent) << s.report.message;
       EXPECT_TRUE(s.report.converged);
-      expect_truth_inside(t, s.domains);
+      EXPECT_TRUE(test::truth_inside(t.mission, s.domains));
     }
   }
 }
@@ -65,9 +41,9 @@ TEST(MissionSolver, MarksMakeTheTubeNarrowerThanDeadReckoningWithGps) {
   without.mission.mark_mine.clear();
   without.mission.mark_range.clear();
   without.mission.mark_side.clear();
-  const Solved a = solve_mission(with_marks), b = solve_mission(without);
-  ASSERT_TRUE(a.report.consistent());
-  ASSERT_TRUE(b.report.consistent());
+  const MissionSolution a = solve_mission(with_marks.mission), b = solve_mission(without.mission);
+  ASSERT_TRUE(a.report.consistent);
+  ASSERT_TRUE(b.report.consistent);
   double sum_a = 0.0, sum_b = 0.0;
   for (std::size_t k = 0; k < a.domains.size(); ++k) {
     EXPECT_LE(a.domains.px[k].width(), b.domains.px[k].width() + 1e-9);
@@ -83,12 +59,12 @@ TEST(MissionSolver, MarksMakeTheTubeNarrowerThanDeadReckoningWithGps) {
 TEST(MissionSolver, ReportsAnOutlierDetectionWithItsNumber) {
   TinyMission t = make_tiny_mission(5, TinyErrors::uniform);
   t.mission.mark_range[1] += 25.0;  // far outside the +-1 m bound
-  const Solved s = solve_mission(t);
-  ASSERT_FALSE(s.report.consistent());
+  const MissionSolution s = solve_mission(t.mission);
+  ASSERT_FALSE(s.report.consistent);
   const Inconsistency& inc = *s.report.inconsistency;
   EXPECT_EQ(inc.kind, Inconsistency::Kind::detection);
-  EXPECT_EQ(inc.source, 1u);
-  EXPECT_NE(inc.message.find("detection 1"), std::string::npos) << inc.message;
+  EXPECT_EQ(inc.source, ConstraintRef::mark(1));
+  EXPECT_NE(s.report.message.find("detection 1"), std::string::npos) << s.report.message;
 }
 
 TEST(MissionSolver, ReportsAnUnreachableGpsFix) {
@@ -97,12 +73,14 @@ TEST(MissionSolver, ReportsAnUnreachableGpsFix) {
   t.mission.mark_mine.clear();
   t.mission.mark_range.clear();
   t.mission.mark_side.clear();
-  t.fixes[1].box[0] = t.fixes[1].box[0] + Interval(500.0);  // 500 m north of the truth
-  const Solved s = solve_mission(t);
-  ASSERT_FALSE(s.report.consistent());
+  t.mission.gps_north[1] += 500.0;  // 500 m north of the truth
+  const MissionSolution s = solve_mission(t.mission);
+  ASSERT_FALSE(s.report.consistent);
   EXPECT_EQ(s.report.inconsistency->kind, Inconsistency::Kind::evolution);
-  EXPECT_NE(s.report.inconsistency->message.find("GPS fix 1"), std::string::npos) << s.report.inconsistency->message;
-  EXPECT_NE(s.report.inconsistency->message.find("GPS fix 0"), std::string::npos) << s.report.inconsistency->message;
+  EXPECT_EQ(s.report.inconsistency->before, ConstraintRef::gps_fix(0));
+  EXPECT_EQ(s.report.inconsistency->after, ConstraintRef::gps_fix(1));
+  EXPECT_NE(s.report.message.find("GPS fix 1"), std::string::npos) << s.report.message;
+  EXPECT_NE(s.report.message.find("GPS fix 0"), std::string::npos) << s.report.message;
 }
 
 TEST(MissionSolver, ValidatesItsOptions) {

@@ -1,0 +1,166 @@
+#include "solver/solve/solve_mission.h"
+
+#include <chrono>
+
+#include "solver/network/inconsistency_text.h"
+#include "solver/solve/warm_start.h"
+
+namespace gesmi {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double elapsed_ms(Clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
+}
+
+// A network constraint id (detection j, or detections.size() + anchor a) as a row.
+ConstraintRef constraint_of(const MissionNetwork& net, std::size_t id) {
+  const std::size_t m = net.detections.size();
+  return id < m ? ConstraintRef::mark(net.detections[id].mark) : ConstraintRef::gps_fix(net.anchors[id - m].fix.source_index);
+}
+
+void take_propagation(SolveReport& report, const SolverReport& r) {
+  report.sweeps = r.sweeps;
+  report.converged = r.converged;
+  report.consistent = r.consistent();
+  report.inconsistency = r.inconsistency;
+}
+
+// The single marks or fixes whose removal restores consistency (q = 1).
+std::vector<ConstraintRef> diagnose(const MissionNetwork& net, const TubeDomains& sensor, const SolverOptions& options) {
+  OutlierOptions o;
+  o.max_outliers = 1;
+  o.mode = OutlierMode::minimal;  // only the hypotheses are wanted
+  o.solver = options;
+  o.solver.on_sweep = nullptr;
+  TubeDomains scratch;
+  const OutlierReport r = solve_with_outliers(net, sensor, scratch, o);
+  std::vector<ConstraintRef> explaining;
+  if (r.minimal_outliers == 1)
+    for (const auto& h : r.hypotheses) explaining.push_back(constraint_of(net, h[0]));
+  return explaining;
+}
+
+void solve_cold(const Mission& mission, const MissionNetwork& net, const SolveOptions& options, MissionSolution& s) {
+  const TubeDomains sensor = sensor_domains(mission, mission.model);
+  s.domains = sensor;
+  add_network_priors(s.domains, net);
+  auto start = Clock::now();
+  take_propagation(s.report, solve(net, s.domains, options.propagation));
+  s.timings_ms["propagate"] = elapsed_ms(start);
+  if (s.report.consistent || !options.diagnose) return;
+  start = Clock::now();
+  s.report.explained_by = diagnose(net, sensor, options.propagation);
+  s.timings_ms["diagnose"] = elapsed_ms(start);
+}
+
+void solve_outliers(const Mission& mission, const MissionNetwork& net, const SolveOptions& options, MissionSolution& s) {
+  const auto start = Clock::now();
+  OutlierOptions o;
+  o.max_outliers = options.max_outliers;
+  o.mode = options.outlier_mode;
+  o.trust_fixes = options.trust_gps;
+  o.solver = options.propagation;
+  const OutlierReport r = solve_with_outliers(net, sensor_domains(mission, mission.model), s.domains, o);
+  s.timings_ms["propagate"] = elapsed_ms(start);
+  SolveReport& report = s.report;
+  report.mode = options.outlier_mode == OutlierMode::relaxed ? SolveMode::outliers : SolveMode::minimal_outliers;
+  report.consistent = r.consistent();
+  report.converged = r.consistent();
+  report.sweeps = r.consistent() ? r.full_solves : r.first_solve.sweeps;
+  if (!r.consistent()) report.inconsistency = r.first_solve.inconsistency;
+  report.minimal_outliers = r.minimal_outliers;
+  report.removal_sets = r.removal_sets;
+  report.consistent_removal_sets = r.consistent_removal_sets;
+  for (const auto& h : r.hypotheses) {
+    std::vector<ConstraintRef> refs;
+    for (const std::size_t id : h) refs.push_back(constraint_of(net, id));
+    report.hypotheses.push_back(refs);
+  }
+  for (std::size_t j = 0; j < net.detections.size(); ++j) s.mark_outlier[net.detections[j].mark] = r.detection_outlier[j];
+  for (std::size_t a = 0; a < net.anchors.size(); ++a) s.gps_outlier[net.anchors[a].fix.source_index] = r.fix_outlier[a];
+}
+
+void solve_warm(const Mission& mission, const MissionNetwork& net, const SolveOptions& options, MissionSolution& s) {
+  std::string why = warm_start_problem(mission, *options.warm_from);
+  std::optional<detail::WarmDomains> warm;
+  if (why.empty()) warm = detail::warm_domains(mission, net, *options.warm_from, why);
+  if (!warm) {
+    s.report.cold_fallback = why;
+    solve_cold(mission, net, options, s);
+    return;
+  }
+  s.report.mode = SolveMode::warm;
+  s.domains = std::move(warm->domains);
+  const auto start = Clock::now();
+  const IncrementalReport r = propagate_from(net, s.domains, warm->added, options.propagation);
+  s.timings_ms["propagate"] = elapsed_ms(start);
+  take_propagation(s.report, r.solver);
+  s.report.work_items = r.work_items;
+}
+
+std::string wording(const SolveReport& report, const SolveOptions& options, const MissionNetwork& net) {
+  std::string text = describe(*report.inconsistency, net);
+  if (report.mode == SolveMode::outliers || report.mode == SolveMode::minimal_outliers)
+    text = "more than " + std::to_string(options.max_outliers) + " of the " +
+           (options.trust_gps ? "marks" : "marks and GPS fixes") + " are wrong (removing any " +
+           std::to_string(options.max_outliers) + " of them leaves the data inconsistent); with all the data: " + text;
+  if (report.explained_by) text += describe_diagnosis(*report.explained_by);
+  return text;
+}
+
+}  // namespace
+
+const char* solve_mode_name(SolveMode mode) {
+  switch (mode) {
+    case SolveMode::cold: return "cold";
+    case SolveMode::warm: return "warm";
+    case SolveMode::outliers: return "outliers";
+    case SolveMode::minimal_outliers: return "minimal-outliers";
+  }
+  return "cold";
+}
+
+std::string SolveOptions::validate() const {
+  if (const std::string why = propagation.validate(); !why.empty()) return why;
+  if (max_outliers > 8) return "at most 8 outliers can be tolerated";
+  if (warm_from && max_outliers >= 0) return "a warm rerun cannot also tolerate outliers";
+  if (trust_gps && max_outliers < 0) return "trusting the GPS fixes only means something when tolerating outliers";
+  return {};
+}
+
+MissionSolution solve_mission(const Mission& mission, const SolveOptions& options) {
+  MissionSolution s;
+  s.time = mission.time;
+  s.mark_time = mission.mark_time;
+  s.mark_range = mission.mark_range;
+  s.mark_mine = mission.mark_mine;
+  s.mark_side = mission.mark_side;
+  s.mine_count = mission.mine_count;
+  s.mark_outlier.assign(mission.mark_count(), 0);
+  s.gps_outlier.assign(mission.gps_time.size(), 0);
+
+  auto start = Clock::now();
+  const MissionNetwork net = build_network(mission, mission.model, gps_fixes(mission));
+  s.timings_ms["build"] = elapsed_ms(start);
+  if (options.warm_from)
+    solve_warm(mission, net, options, s);
+  else if (options.max_outliers >= 0)
+    solve_outliers(mission, net, options, s);
+  else
+    solve_cold(mission, net, options, s);
+
+  s.candidates.assign(mission.mark_count(), 0);
+  if (s.domains.candidates.size() == net.detections.size())
+    for (std::size_t j = 0; j < net.detections.size(); ++j) s.candidates[net.detections[j].mark] = s.domains.candidates[j];
+  if (!s.report.consistent) s.report.message = wording(s.report, options, net);
+  if (options.waterfall) {
+    start = Clock::now();
+    s.waterfall = compute_waterfall(mission, mission.model, s.domains);
+    s.timings_ms["waterfall"] = elapsed_ms(start);
+  }
+  return s;
+}
+
+}  // namespace gesmi

@@ -1,0 +1,53 @@
+#include "solver/solve/warm_start.h"
+
+#include <cmath>
+
+#include "solver/solve/solve_mission.h"
+
+namespace gesmi {
+
+std::string warm_start_problem(const Mission& mission, const MissionSolution& previous) {
+  if (!previous.report.consistent) return "that result is inconsistent; run a cold solve";
+  if (previous.time != mission.time || previous.mine_count != mission.mine_count)
+    return "it was computed on another mission";
+  const std::size_t rows = previous.mark_count();
+  if (rows > mission.mark_count() || previous.candidates.size() != rows)
+    return "the mark table changed other than by added rows; run a cold solve";
+  for (std::size_t j = 0; j < rows; ++j)
+    if (previous.mark_time[j] != mission.mark_time[j] || previous.mark_range[j] != mission.mark_range[j] ||
+        previous.mark_mine[j] != mission.mark_mine[j] || previous.mark_side[j] != mission.mark_side[j])
+      return "the mark table changed other than by added rows; run a cold solve";
+  const TubeDomains& d = previous.domains;
+  if (d.size() != mission.size() || d.dx.size() + 1 != mission.size() ||
+      d.mines.size() != static_cast<std::size_t>(mission.mine_count))
+    return "it was computed on another mission";
+  return {};
+}
+
+namespace detail {
+
+std::optional<WarmDomains> warm_domains(const Mission& mission, const MissionNetwork& network,
+                                        const MissionSolution& previous, std::string& why) {
+  // Symmetry breaking among unlabelled mines depends on the labelled ones: if the
+  // added marks change it, the earlier domains assumed other labels.
+  Mission before = mission;
+  const std::size_t rows = previous.mark_count();
+  for (auto* v : {&before.mark_time, &before.mark_range}) v->resize(rows);
+  for (auto* v : {&before.mark_mine, &before.mark_side}) v->resize(rows);
+  const MissionNetwork old_network = build_network(before, before.model, gps_fixes(before));
+  for (const Detection& old_detection : old_network.detections)
+    for (const Detection& detection : network.detections)
+      if (detection.mark == old_detection.mark && detection.allowed != old_detection.allowed) {
+        why = "the added marks name a mine no mark named before";
+        return std::nullopt;
+      }
+  WarmDomains warm;
+  warm.domains = previous.domains;
+  add_network_priors(warm.domains, network);    // mines and candidates reset...
+  warm.domains.mines = previous.domains.mines;  // ...then the earlier mine boxes restored
+  warm.added = carry_candidates(network, warm.domains, previous.candidates);
+  return warm;
+}
+
+}  // namespace detail
+}  // namespace gesmi

@@ -1,0 +1,61 @@
+#include "tools/gesmi/solve_report.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstdio>
+#include <numeric>
+
+#include "solver/network/inconsistency_text.h"
+#include "tools/gesmi/json_writer.h"
+
+namespace gesmi::cli {
+
+void print_solve_notes(const MissionSolution& s) {
+  const SolveReport& r = s.report;
+  if (r.cold_fallback) std::fprintf(stderr, "gesmi solve: %s; solving cold\n", r.cold_fallback->c_str());
+  if (!r.consistent || r.minimal_outliers == 0 || r.hypotheses.empty()) return;
+  std::fprintf(stderr, "gesmi solve: consistent with %d outlier(s); %zu hypothesis(es) restore consistency:\n",
+               r.minimal_outliers, r.hypotheses.size());
+  for (const auto& h : r.hypotheses) {
+    std::string names;
+    for (const ConstraintRef& c : h) names += (names.empty() ? "" : ", ") + describe(c);
+    std::fprintf(stderr, "  without %s\n", names.c_str());
+  }
+}
+
+void print_solve_summary(const Mission& m, const MissionSolution& s, const std::string& output) {
+  // Marks without a mine number, in time order: the mines still possible.
+  std::vector<std::size_t> rows(m.mark_count());
+  std::iota(rows.begin(), rows.end(), std::size_t{0});
+  std::stable_sort(rows.begin(), rows.end(), [&](std::size_t a, std::size_t b) { return m.mark_time[a] < m.mark_time[b]; });
+  for (const std::size_t j : rows) {
+    if (m.mark_mine[j] >= 0) continue;
+    std::string mines;
+    for (int i = 0; i < m.mine_count; ++i)
+      if (s.candidates[j] >> i & 1) mines += (mines.empty() ? "" : ", ") + std::to_string(i);
+    const int count = std::popcount(s.candidates[j]);
+    std::printf("mark %zu at t = %.1f s: %s %s\n", j, m.mark_time[j], count == 1 ? "mine" : (count == 0 ? "no mine" : "mines"),
+                mines.c_str());
+  }
+  std::printf("%s: %s after %d sweeps, largest horizontal tube width %.1f m, written to %s\n",
+              solve_mode_name(s.report.mode), s.report.consistent ? "consistent" : "INCONSISTENT", s.report.sweeps,
+              s.domains.max_horizontal_width(), output.c_str());
+}
+
+void print_solve_stats(const Mission& m, const MissionSolution& s, const std::map<std::string, double>& timings) {
+  std::string json = "{\"status\": " + json_string(s.report.consistent ? "consistent" : "inconsistent") +
+                     ", \"mode\": " + json_string(solve_mode_name(s.report.mode)) +
+                     ", \"sweeps\": " + std::to_string(s.report.sweeps) +
+                     ", \"converged\": " + (s.report.converged ? "true" : "false") +
+                     ", \"steps\": " + std::to_string(m.size()) + ", \"marks\": " + std::to_string(m.mark_count()) +
+                     ", \"max_tube_width_m\": " + json_number(s.domains.max_horizontal_width()) +
+                     ", \"work_items\": " + std::to_string(s.report.work_items) + ", \"timings_ms\": {";
+  bool first = true;
+  for (const auto& [name, ms] : timings) {
+    json += (first ? "" : ", ") + json_string(name) + ": " + json_number(ms);
+    first = false;
+  }
+  std::printf("%s}}\n", json.c_str());
+}
+
+}  // namespace gesmi::cli

@@ -1,0 +1,20 @@
+#pragma once
+// What `gesmi solve` prints about a solution: the candidate mines of marks without
+// a number, the outlier hypotheses, the one-line summary, or the --stats JSON.
+
+#include <map>
+#include <string>
+
+#include "solver/mission/mission.h"
+#include "solver/solve/mission_solution.h"
+
+namespace gesmi::cli {
+
+/// Notes for the operator on stderr: a warm rerun solved cold, the hypotheses at q*.
+void print_solve_notes(const MissionSolution& solution);
+/// The candidates of unnumbered marks and the summary line (stdout).
+void print_solve_summary(const Mission& mission, const MissionSolution& solution, const std::string& output);
+/// The --stats JSON object (stdout), timings included.
+void print_solve_stats(const Mission& mission, const MissionSolution& solution, const std::map<std::string, double>& timings);
+
+}  // namespace gesmi::cli
