@@ -1,0 +1,66 @@
+#include "tools/gesmi/solve_arguments.h"
+
+#include <cmath>
+
+#include "solver/network/mission_network.h"
+#include "tools/gesmi/cli_args.h"
+
+namespace gesmi::cli {
+
+namespace po = boost::program_options;
+
+po::options_description solve_options() {
+  po::options_description options("solve options");
+  options.add_options()
+      ("mission", po::value<std::string>()->required(), "mission file (HDF5)")
+      ("output,o", po::value<std::string>()->required(), "result file to write (HDF5)")
+      ("config", po::value<std::string>(), "sensor bounds (YAML) overriding the mission's")
+      ("max-sweeps", po::value<std::string>()->default_value("100"), "sweep limit")
+      ("tolerance", po::value<std::string>()->default_value("0.001"), "stop when no bound moves more (m)")
+      ("stats", "print one JSON object with timings and sweeps on stdout")
+      ("from", po::value<std::string>(), "warm start from an earlier result of this mission")
+      ("max-outliers", po::value<std::string>(),
+       "tolerate up to Q wrong marks or GPS fixes: the result holds every trajectory consistent with all the data "
+       "but at most Q of them (guaranteed whenever at most Q are wrong)")
+      ("minimal-outliers", po::value<std::string>(),
+       "CONDITIONAL: the hull over the smallest sets (q* <= Q) of marks or fixes whose removal restores "
+       "consistency; it contains the truth only if exactly q* inputs are wrong")
+      ("trust-gps", "GPS fixes are never outliers: only marks are tolerated as wrong")
+      ("mines", po::value<std::string>(), "number of mines K (default: the mission's)");
+  return options;
+}
+
+SolveOptions parse_solve_options(const po::variables_map& v) {
+  SolveOptions o;
+  const long long sweeps = parse_integer("--max-sweeps", v["max-sweeps"].as<std::string>());
+  if (sweeps < 1 || sweeps > 1000000) throw UsageError("--max-sweeps: must be between 1 and 1000000");
+  o.propagation.max_sweeps = static_cast<int>(sweeps);
+  o.propagation.tolerance = parse_non_negative("--tolerance", v["tolerance"].as<std::string>());
+  if (!std::isfinite(o.propagation.tolerance)) throw UsageError("--tolerance: must be finite");
+  for (const std::string name : {"max-outliers", "minimal-outliers"}) {
+    if (!v.count(name)) continue;
+    if (o.max_outliers >= 0) throw UsageError("--max-outliers and --minimal-outliers cannot be combined");
+    const long long q = parse_integer("--" + name, v[name].as<std::string>());
+    if (q < 0 || q > 8) throw UsageError("--" + name + ": must be between 0 and 8");
+    o.max_outliers = static_cast<int>(q);
+    o.outlier_mode = name == "max-outliers" ? OutlierMode::relaxed : OutlierMode::minimal;
+  }
+  o.trust_gps = v.count("trust-gps") > 0;
+  if (o.trust_gps && o.max_outliers < 0) throw UsageError("--trust-gps goes with --max-outliers or --minimal-outliers");
+  if (v.count("from") && o.max_outliers >= 0) throw UsageError("--from and --max-outliers cannot be combined");
+  return o;
+}
+
+void apply_mine_count(const po::variables_map& v, Mission& mission) {
+  if (!v.count("mines")) return;
+  const long long k = parse_integer("--mines", v["mines"].as<std::string>());
+  int largest = -1;
+  for (const std::int32_t i : mission.mark_mine) largest = std::max(largest, static_cast<int>(i));
+  if (k <= largest)
+    throw UsageError("--mines: " + std::to_string(k) + " is not more than the largest mine number in the mark table (" +
+                     std::to_string(largest) + ")");
+  if (k > kMaxMines) throw UsageError("--mines: at most 64 mines");
+  mission.mine_count = static_cast<int>(k);
+}
+
+}  // namespace gesmi::cli

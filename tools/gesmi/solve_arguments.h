@@ -1,0 +1,21 @@
+#pragma once
+// The options of `gesmi solve`, and their translation into SolveOptions.
+
+#include <boost/program_options.hpp>
+
+#include "solver/mission/mission.h"
+#include "solver/solve/solve_mission.h"
+
+namespace gesmi::cli {
+
+inline constexpr const char* kSolveUsage =
+    "gesmi solve MISSION.h5 -o RESULT.h5 [--config bounds.yaml] [--max-sweeps N] [--tolerance T] [--stats] "
+    "[--from RESULT.h5] [--max-outliers Q | --minimal-outliers Q] [--trust-gps] [--mines K]";
+
+boost::program_options::options_description solve_options();
+/// SolveOptions from the parsed options; UsageError naming the option when one is bad.
+SolveOptions parse_solve_options(const boost::program_options::variables_map& v);
+/// Applies --mines K to the mission (K above every mine number of the mark table).
+void apply_mine_count(const boost::program_options::variables_map& v, Mission& mission);
+
+}  // namespace gesmi::cli
