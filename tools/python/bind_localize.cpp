@@ -1,0 +1,61 @@
+// Start-up localization by set inversion in Python (as `gesmi localize`).
+
+#include <pybind11/stl.h>
+
+#include "io/localization_scenario.h"
+#include "solver/setinv/localization_problem.h"
+#include "tools/python/bindings.h"
+
+namespace gesmi::python {
+namespace {
+
+py::array_t<double> boxes(const Paving& paving) {
+  py::array_t<double> out({static_cast<py::ssize_t>(paving.size()), static_cast<py::ssize_t>(paving.dim()), py::ssize_t{2}});
+  auto a = out.mutable_unchecked<3>();
+  for (std::size_t i = 0; i < paving.size(); ++i)
+    for (std::size_t c = 0; c < paving.dim(); ++c) {
+      a(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c), 0) = paving.box(i)[c].lo();
+      a(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c), 1) = paving.box(i)[c].hi();
+    }
+  return out;
+}
+
+}  // namespace
+
+void bind_localize(py::module_& m) {
+  m.def(
+      "localize",
+      [](const std::string& scenario) {
+        const LocalizationProblem problem = io::read_localization_scenario(scenario);
+        LocalizationResult r;
+        {
+          py::gil_scoped_release release;
+          r = localize(problem);
+        }
+        py::dict out;
+        out["found"] = r.found;
+        out["q"] = r.q;
+        out["inner"] = boxes(r.paving.inner);
+        out["boundary"] = boxes(r.paving.boundary);
+        out["truth_enclosed"] = r.truth_enclosed;
+        out["seconds"] = r.seconds;
+        py::list hypotheses;
+        for (const LocalizationHypothesis& h : r.hypotheses) {
+          py::dict d;
+          std::vector<std::pair<double, double>> hull;
+          for (const Interval& x : h.component.hull) hull.emplace_back(x.lo(), x.hi());
+          d["hull"] = hull;
+          d["outliers"] = h.outliers.outliers;
+          d["outliers_determined"] = h.outliers.determined;
+          d["contains_truth"] = h.contains_truth;
+          hypotheses.append(d);
+        }
+        out["hypotheses"] = hypotheses;
+        return out;
+      },
+      py::arg("scenario"),
+      "Static localization by set inversion from a scenario file (as `gesmi localize`): the pavings "
+      "(inner and boundary boxes, (B, 3, 2)), q and the hypotheses (hull, outliers)");
+}
+
+}  // namespace gesmi::python

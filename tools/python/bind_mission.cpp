@@ -1,0 +1,149 @@
+// Missions in Python: read, write, simulate, the sensor model as a dict-like
+// object, the arrays as numpy views, and the mark table's edits.
+
+#include <pybind11/stl.h>
+
+#include "io/format_error.h"
+#include "io/geodesy.h"
+#include "io/mission_file.h"
+#include "io/sensor_model_attributes.h"
+#include "io/sonar_side.h"
+#include "solver/sim/simulator.h"
+#include "tools/python/bindings.h"
+
+namespace gesmi::python {
+namespace {
+
+// The sensor model of a mission as a mapping key -> value (docs/formats.md keys).
+struct ModelView {
+  py::object owner;  // keeps the mission alive
+  SensorModel* model;
+
+  py::object get(const std::string& key) const {
+    if (key == "sonar_side") return py::str(std::string(io::sonar_side_name(model->sonar_side)));
+    for (const io::ModelField& f : io::model_fields())
+      if (f.key == key) return py::float_(model->*f.member);
+    throw py::key_error(key);
+  }
+  void set(const std::string& key, const py::object& value) {
+    if (key == "sonar_side") {
+      model->sonar_side = io::parse_sonar_side(py::cast<std::string>(value), "sonar_side");
+      return;
+    }
+    for (const io::ModelField& f : io::model_fields())
+      if (f.key == key) {
+        SensorModel updated = *model;
+        updated.*f.member = py::cast<double>(value);
+        if (const std::string why = updated.validate(); !why.empty()) throw io::FormatError("sensor model: " + why);
+        *model = updated;
+        return;
+      }
+    throw py::key_error(key);
+  }
+  std::vector<std::string> keys() const {
+    std::vector<std::string> k;
+    for (const io::ModelField& f : io::model_fields()) k.emplace_back(f.key);
+    k.emplace_back("sonar_side");
+    return k;
+  }
+};
+
+// A numpy view of a mission array, and a setter that copies any 1-D array in.
+#define GESMI_ARRAY(name) \
+  def_property(#name, [](py::object self) { return view(self.cast<Mission&>().name, self); }, \
+               [](Mission& mission, const py::array_t<double, py::array::c_style | py::array::forcecast>& a) { mission.name = to_vector(a); })
+
+}  // namespace
+
+void bind_mission(py::module_& m) {
+  py::class_<ModelView>(m, "SensorModel", "The sensor error bounds of a mission, as a mapping (docs/formats.md)")
+      .def("__getitem__", &ModelView::get)
+      .def("__setitem__", &ModelView::set)
+      .def("__contains__", [](const ModelView& v, const std::string& k) { const auto keys = v.keys(); return std::find(keys.begin(), keys.end(), k) != keys.end(); })
+      .def("__len__", [](const ModelView& v) { return v.keys().size(); })
+      .def("__iter__", [](const ModelView& v) { return py::iter(py::cast(v.keys())); })
+      .def("keys", &ModelView::keys)
+      .def("items", [](const ModelView& v) {
+        py::list items;
+        for (const std::string& k : v.keys()) items.append(py::make_tuple(k, v.get(k)));
+        return items;
+      })
+      .def("__repr__", [](const ModelView& v) {
+        py::dict d;
+        for (const std::string& k : v.keys()) d[py::str(k)] = v.get(k);
+        return "SensorModel(" + py::repr(d).cast<std::string>() + ")";
+      });
+
+  py::class_<Mission>(m, "Mission", "A mission's measurements as flat arrays on one time grid (docs/formats.md)")
+      .def(py::init<>())
+      .GESMI_ARRAY(time).GESMI_ARRAY(roll).GESMI_ARRAY(pitch).GESMI_ARRAY(heading)
+      .GESMI_ARRAY(vx).GESMI_ARRAY(vy).GESMI_ARRAY(vz).GESMI_ARRAY(altitude).GESMI_ARRAY(depth)
+      .GESMI_ARRAY(gps_time).GESMI_ARRAY(gps_longitude).GESMI_ARRAY(gps_latitude)
+      .GESMI_ARRAY(truth_x).GESMI_ARRAY(truth_y).GESMI_ARRAY(truth_z).GESMI_ARRAY(truth_mines)
+      .def_property_readonly("mark_time", [](const Mission& s) { return s.mark_time; })
+      .def_property_readonly("mark_range", [](const Mission& s) { return s.mark_range; })
+      .def_property_readonly("mark_mine", [](const Mission& s) { return s.mark_mine; })
+      .def_property_readonly("mark_side", [](const Mission& s) { return s.mark_side; })
+      .def_readwrite("mine_count", &Mission::mine_count)
+      .def_property(
+          "origin", [](const Mission& s) { return py::make_tuple(s.origin.latitude, s.origin.longitude); },
+          [](Mission& s, std::pair<double, double> o) { s.origin = {o.first, o.second}; })
+      .def_property_readonly("model", [](py::object self) { return ModelView{self, &self.cast<Mission&>().model}; })
+      .def("__len__", &Mission::size)
+      .def("mark_count", &Mission::mark_count)
+      .def("validate", [](Mission& s) {
+        io::validate_mission(s, "mission");
+        io::fill_local_gps(s, "mission");
+      }, "Checks the mission as the file reader does (FormatError naming the field) and converts the GPS fixes")
+      .def(
+          "add_mark",
+          [](Mission& s, double time, double range, const std::string& side, int mine) {
+            s.mark_time.push_back(time);
+            s.mark_range.push_back(range);
+            s.mark_side.push_back(side == "port" ? -1 : side == "starboard" ? 1 : 0);
+            s.mark_mine.push_back(mine);
+            if (!s.truth_marks_outlier.empty()) s.truth_marks_outlier.push_back(0);
+            if (!s.truth_marks_mine.empty()) s.truth_marks_mine.push_back(-1);
+            try {
+              io::validate_mission(s, "mission");
+            } catch (...) {
+              for (auto* v : {&s.mark_time, &s.mark_range}) v->pop_back();
+              for (auto* v : {&s.mark_side, &s.mark_mine}) v->pop_back();
+              if (!s.truth_marks_outlier.empty()) s.truth_marks_outlier.pop_back();
+              if (!s.truth_marks_mine.empty()) s.truth_marks_mine.pop_back();
+              throw;
+            }
+          },
+          py::arg("time"), py::arg("range"), py::arg("side") = "starboard", py::arg("mine") = -1,
+          "Adds an operator's mark (mine -1: unknown), checked as the mission file reader checks marks");
+
+  m.def("read_mission", &io::read_mission, py::arg("path"), "Reads and validates a mission file (HDF5)");
+  m.def("write_mission", [](const Mission& s, const std::string& path) { io::write_mission(s, path); }, py::arg("mission"),
+        py::arg("path"), "Writes a mission file atomically");
+  m.def(
+      "simulate",
+      [](std::uint64_t seed, const std::string& errors, double duration, double rate, int mines, double missed,
+         double unassociated, int outliers) {
+        SimulationOptions o;
+        o.seed = seed;
+        if (errors != "uniform" && errors != "worst-case") throw io::FormatError("errors: expected uniform or worst-case");
+        o.errors = errors == "uniform" ? SimulatedErrors::uniform : SimulatedErrors::worst_case;
+        o.duration = duration;
+        o.rate = rate;
+        o.mines = mines;
+        o.missed = missed;
+        o.unassociated = unassociated;
+        o.outliers = outliers;
+        if (const std::string why = o.validate(); !why.empty()) throw io::FormatError("simulate: " + why);
+        Mission s = simulate_mission(o);
+        s.origin = {48.212920614, -4.458227931};  // the reference start fix, as `gesmi simulate`
+        io::set_geodetic_gps(s);
+        io::fill_local_gps(s, "simulated mission");
+        return s;
+      },
+      py::arg("seed") = 1, py::arg("errors") = "uniform", py::arg("duration") = 5999.4, py::arg("rate") = 10.0,
+      py::arg("mines") = 6, py::arg("missed") = 0.0, py::arg("unassociated") = 0.0, py::arg("outliers") = 0,
+      "Simulates a reference-like mission with ground truth (as `gesmi simulate`)");
+}
+
+}  // namespace gesmi::python
