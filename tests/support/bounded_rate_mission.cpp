@@ -5,6 +5,8 @@
 #include <numbers>
 #include <random>
 
+#include "tests/support/rotation_long_double.h"
+
 namespace gesmi::test {
 namespace {
 
@@ -102,15 +104,9 @@ long double Track::at(long double time) const {
 }
 
 void TrueMotion::world_velocity(long double time, long double out[3]) const {
-  // R = Rz(psi) Ry(theta) Rx(phi) written out as a matrix (the textbook ZYX form).
-  const long double phi = roll.at(time), theta = pitch.at(time), psi = heading.at(time);
-  const long double cf = std::cos(phi), sf = std::sin(phi), ct = std::cos(theta), st = std::sin(theta);
-  const long double cp = std::cos(psi), sp = std::sin(psi);
+  const RotationLd r(roll.at(time), pitch.at(time), heading.at(time));
   const long double v[3] = {vx.at(time), vy.at(time), vz.at(time)};
-  const long double r[3][3] = {{cp * ct, cp * st * sf - sp * cf, cp * st * cf + sp * sf},
-                               {sp * ct, sp * st * sf + cp * cf, sp * st * cf - cp * sf},
-                               {-st, ct * sf, ct * cf}};
-  for (int i = 0; i < 3; ++i) out[i] = r[i][0] * v[0] + r[i][1] * v[1] + r[i][2] * v[2];
+  r.to_world(v, out);
 }
 
 void TrueMotion::displacement(long double t0, long double t1, long double out[3]) const {
