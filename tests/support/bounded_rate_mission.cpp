@@ -91,8 +91,6 @@ Track make_track(const std::vector<long double>& times, const std::vector<long d
   return track;
 }
 
-long double sample_at(const Track& track, long double time) { return track.at(time); }
-
 }  // namespace
 
 long double Track::at(long double time) const {
@@ -190,7 +188,7 @@ BoundedRateMission make_bounded_rate_mission(std::uint64_t seed, const BoundedRa
   const auto inside = [&](int side) { return side == 0 ? uniform(rng, -1.0L, 1.0L) * kInside : kInside; };
   const auto read = [&](const Track& track, const std::vector<int>& sides, std::size_t k, auto bound) {
     const int side = sides[k] == 0 ? 1 : sides[k];
-    return reading_for(sample_at(track, times[k]), side, inside(sides[k]), bound);
+    return reading_for(track.at(times[k]), side, inside(sides[k]), bound);
   };
   for (std::size_t k = 0; k < n; ++k) {
     m.roll.push_back(read(truth.roll, side_roll, k, constant(model.roll)));

@@ -47,7 +47,7 @@ test::TinyMission with_marks_between_samples(test::TinyMission t) {
 
 std::vector<Case> base_cases() {
   std::vector<Case> cases;
-  for (const std::uint64_t seed : {41u, 42u}) {
+  for (const std::uint64_t seed : {41u}) {
     for (const test::TinyErrors e : {test::TinyErrors::uniform, test::TinyErrors::worst_case}) {
       test::TinyMission t = test::make_tiny_mission(seed, e);
       cases.push_back({"tiny " + std::to_string(seed), t.mission, t.fixes});
@@ -58,7 +58,7 @@ std::vector<Case> base_cases() {
   for (const std::uint64_t seed : {5u, 6u}) {
     SimulationOptions o;
     o.seed = seed;
-    o.duration = 900.0;
+    o.duration = 600.0;
     o.errors = seed == 5 ? SimulatedErrors::uniform : SimulatedErrors::worst_case;
     Mission m = simulate_mission(o);
     std::vector<PositionFix> fixes = gps_fixes(m);
