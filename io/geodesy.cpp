@@ -92,8 +92,8 @@ void fill_local_gps(Mission& m, const std::string& source) {
   // A fix's bounds are north and east half-widths along its own meridian and
   // parallel, which turn against the frame's axes by the meridian convergence (at
   // most heading_frame_margin over the area): the frame box must hold that box
-  // turned, so each half-width grows by the other times sin(angle) <= angle. At
-  // 70° and 10 km this is 7 mm for a 2.5 m box; at 89°, 23 cm.
+  // turned, so each half-width grows by the other times sin(angle) <= angle: for a
+  // 2.51 m box, 1.2 mm on the reference mission, 11 mm at 70° and 10 km, 25 cm at 89°.
   for (std::size_t i = 0; i < g; ++i) {
     const double north = m.gps_north_halfwidth[i], east = m.gps_east_halfwidth[i];
     m.gps_north_halfwidth[i] = add_up(north, mul_up(east, m.heading_frame_margin));
