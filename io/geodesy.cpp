@@ -89,6 +89,16 @@ void fill_local_gps(Mission& m, const std::string& source) {
   const double angle = extent / (0.99 * a);  // rad, the extent seen from the Earth's centre
   const double latitude = std::min(std::fabs(m.origin.latitude) * degree + angle, std::numbers::pi / 2 - 0.01);
   m.heading_frame_margin = angle * std::tan(latitude) * 1.01;
+  // A fix's bounds are north and east half-widths along its own meridian and
+  // parallel, which turn against the frame's axes by the meridian convergence (at
+  // most heading_frame_margin over the area): the frame box must hold that box
+  // turned, so each half-width grows by the other times sin(angle) <= angle: for a
+  // 2.51 m box, 1.2 mm on the reference mission, 11 mm at 70° and 10 km, 25 cm at 89°.
+  for (std::size_t i = 0; i < g; ++i) {
+    const double north = m.gps_north_halfwidth[i], east = m.gps_east_halfwidth[i];
+    m.gps_north_halfwidth[i] = add_up(north, mul_up(east, m.heading_frame_margin));
+    m.gps_east_halfwidth[i] = add_up(east, mul_up(north, m.heading_frame_margin));
+  }
 }
 
 }  // namespace gesmi::io

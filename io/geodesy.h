@@ -7,7 +7,8 @@
 // solver integrates DVL distances along the sea surface while the tangent plane
 // holds their projections. Between two points of a zone of radius d = 10 km the
 // difference is at most d^3 / (3 M^2) = 8.3 mm (M = b^2/a, the smallest radius of
-// curvature); fill_local_gps() widens every box by kLocalFrameError = 1 cm. Along a
+// curvature); fill_local_gps() widens every box by kLocalFrameError = 1 cm, then by
+// the meridian convergence that turns a fix's north/east axes against the frame's. Along a
 // path the frame's scale differs from 1 by at most d^2 / (2 M^2) = 1.25e-6, so a
 // path's error grows with its length (docs/formats.md). Points convert both ways
 // exactly (to_geodetic inverts to_local). Meridian convergence (true north turning

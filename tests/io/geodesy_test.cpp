@@ -133,7 +133,12 @@ TEST(Geodesy, GpsBoxesAreWidenedAndHoldTheFixes) {
   m.gps_given_north_halfwidth = {0.5, 7.0};
   m.gps_given_east_halfwidth = {0.25, 0.0};
   fill_local_gps(m, "m");
-  EXPECT_EQ(m.gps_north_halfwidth[0], 0.5 + kLocalFrameError);
+  // ... and turned by the meridian convergence: each half-width grows by the other
+  // times the heading margin (docs/formats.md).
+  const double turn = m.heading_frame_margin;
+  EXPECT_GT(turn, 0.0);
+  EXPECT_NEAR(m.gps_north_halfwidth[0], 0.5 + kLocalFrameError + (0.25 + kLocalFrameError) * turn, 1e-12);
+  EXPECT_NEAR(m.gps_east_halfwidth[0], 0.25 + kLocalFrameError + (0.5 + kLocalFrameError) * turn, 1e-12);
   EXPECT_GE(m.gps_east_halfwidth[1], kLocalFrameError);
   EXPECT_LT(m.gps_east_halfwidth[1], 2 * kLocalFrameError);
 }
