@@ -54,7 +54,8 @@ int run_simulate(std::span<const std::string> args) {
   o.missed = parse_double("--missed", v["missed"].as<std::string>());
   o.unassociated = parse_double("--unassociated", v["unassociated"].as<std::string>());
   o.outliers = static_cast<int>(parse_integer("--outliers", v["outliers"].as<std::string>()));
-  if (const std::string why = o.validate(); !why.empty()) throw UsageError(why);
+  // Each reason starts with the option it is about ("missed must be ...").
+  if (const std::string why = o.validate(); !why.empty()) throw UsageError("--" + why);
   const std::string output = v["output"].as<std::string>();
   io::check_writable_target(output);
 
