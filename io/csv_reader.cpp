@@ -4,6 +4,7 @@
 
 #include "io/csv_number.h"
 #include "io/format_error.h"
+#include "io/message_text.h"
 
 namespace gesmi::io {
 namespace {
@@ -68,7 +69,7 @@ const std::vector<std::string>& CsvReader::read_header(std::initializer_list<std
   if (!ok) {
     std::string wanted = "expected '" + expected + "'";
     if (optional.size() > 0) wanted += " then optional columns among " + joined(optional);
-    fail_line("header: " + wanted + ", found '" + std::string(trim(line_text_)) + "'");
+    fail_line("header: " + wanted + ", found " + quoted_input(trim(line_text_)));
   }
   columns_.assign(fields_.begin(), fields_.end());
   return columns_;
@@ -84,7 +85,7 @@ bool CsvReader::next() {
                                std::to_string(fields_.size()) + ")");
     if (fields_.size() > columns_.size())
       fail_line("expected " + std::to_string(columns_.size()) + " fields, found " + std::to_string(fields_.size()) +
-                " (extra field '" + std::string(fields_[columns_.size()]) + "')");
+                " (extra field " + quoted_input(fields_[columns_.size()]) + ")");
     return true;
   }
   if (in_.bad()) fail_line("read error");
@@ -100,7 +101,7 @@ double CsvReader::any_number(std::size_t column) const {
   const std::string_view field = fields_[column];
   if (field.empty()) fail(column, "missing value");
   const std::optional<double> value = parse_number(field);
-  if (!value) fail(column, "expected a number, found '" + std::string(field) + "'");
+  if (!value) fail(column, "expected a number, found " + quoted_input(field));
   return *value;
 }
 

@@ -11,20 +11,21 @@
 
 namespace gesmi::io {
 
-void write_gesmi_txt(const Mission& m, std::ostream& out) {
+void write_gesmi_txt(const Mission& m, const std::string& source, std::ostream& out) {
   const std::size_t n = m.size();
   if (m.gps_north.size() != m.gps_time.size())
-    throw FormatError("GESMI text export: the GPS fixes are not in the local frame (read the mission with read_mission)");
+    throw FormatError(source + ": GESMI text export: the GPS fixes are not in the local frame (read the mission with read_mission)");
   // The fix of each sample, if any.
   std::vector<std::ptrdiff_t> fix_at(n, -1);
   for (std::size_t i = 0; i < m.gps_time.size(); ++i) {
     const auto at = std::lower_bound(m.time.begin(), m.time.end(), m.gps_time[i]);
     if (at == m.time.end() || *at != m.gps_time[i])
-      throw FormatError("GESMI text export: GPS fix " + std::to_string(i) + " at " + format_number(m.gps_time[i]) +
-                        " s is not at a sample time (the format holds positions on sample rows only)");
+      throw FormatError(source + ": /gps/time: fix " + std::to_string(i) + " at " + format_number(m.gps_time[i]) +
+                        " s is not at a sample time (a GESMI text log holds positions on sample rows only)");
     const auto k = static_cast<std::size_t>(at - m.time.begin());
     if (fix_at[k] >= 0)
-      throw FormatError("GESMI text export: two GPS fixes at " + format_number(m.gps_time[i]) + " s");
+      throw FormatError(source + ": /gps/time: two fixes at " + format_number(m.gps_time[i]) +
+                        " s (a GESMI text log holds one position per sample row)");
     fix_at[k] = static_cast<std::ptrdiff_t>(i);
   }
   const std::vector<double>* values[8] = {&m.roll, &m.pitch, &m.heading, &m.vx, &m.vy, &m.vz, &m.depth, &m.altitude};
@@ -58,11 +59,11 @@ void write_gesmi_txt(const Mission& m, std::ostream& out) {
   }
 }
 
-void export_gesmi_txt(const Mission& mission, const std::string& path) {
+void export_gesmi_txt(const Mission& mission, const std::string& source, const std::string& path) {
   AtomicOutput out(path);
   {
     std::ofstream file(out.temp_path(), std::ios::binary);
-    write_gesmi_txt(mission, file);
+    write_gesmi_txt(mission, source, file);
     file.flush();
     if (!file) throw FormatError(path + ": cannot write (disk full?)");
   }

@@ -14,10 +14,11 @@
 namespace gesmi::io {
 
 /// Writes the log; the mission's GPS fixes must be in the local frame (as
-/// read_mission leaves them) and each at a sample time, else FormatError.
-void write_gesmi_txt(const Mission& mission, std::ostream& out);
+/// read_mission leaves them) and each at a sample time, else FormatError naming
+/// `source`, the mission's file.
+void write_gesmi_txt(const Mission& mission, const std::string& source, std::ostream& out);
 
 /// The same into a file, atomically (temporary name, then rename).
-void export_gesmi_txt(const Mission& mission, const std::string& path);
+void export_gesmi_txt(const Mission& mission, const std::string& source, const std::string& path);
 
 }  // namespace gesmi::io

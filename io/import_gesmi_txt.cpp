@@ -7,6 +7,7 @@
 #include "io/csv_number.h"
 #include "io/format_error.h"
 #include "io/geodesy.h"
+#include "io/message_text.h"
 #include "solver/interval/rounding.h"
 
 namespace gesmi::io {
@@ -80,7 +81,7 @@ GesmiTextLog read_gesmi_txt(std::istream& in, const std::string& name) {
     if (!numeric) {
       if (log.time.empty()) continue;  // a header line
       if (tokens.size() != 21) fail("expected " + std::string(kRowShape) + "; found " + std::to_string(tokens.size()) + " fields");
-      fail(field_name(bad_token) + ": expected a number, found '" + std::string(tokens[bad_token]) + "'");
+      fail(field_name(bad_token) + ": expected a number, found " + quoted_input(tokens[bad_token]));
     }
     if (const std::string_view why = non_finite_reason(numbers[0]); !why.empty()) fail("t: " + std::string(why));
     if (!log.time.empty() && !(numbers[0] > log.time.back()))

@@ -2,6 +2,7 @@
 
 #include "io/csv_number.h"
 #include "io/csv_reader.h"
+#include "io/message_text.h"
 
 namespace gesmi::io {
 
@@ -22,7 +23,7 @@ MarkTable read_marks_csv(std::istream& in, const std::string& name, const MarkRu
     std::int32_t mine = -1;
     if (!mine_text.empty() && mine_text != "?") {
       const std::optional<long long> i = parse_integer(mine_text);
-      if (!i) csv.fail(1, "expected a mine number, '?' or nothing, found '" + std::string(mine_text) + "'");
+      if (!i) csv.fail(1, "expected a mine number, '?' or nothing, found " + quoted_input(mine_text));
       if (*i < -1 || *i >= rules.mine_count) {
         const std::string known = rules.mine_count == 0 ? "the mission has no mines"
                                                         : "the mission's mines are 0.." + std::to_string(rules.mine_count - 1);
@@ -40,7 +41,7 @@ MarkTable read_marks_csv(std::istream& in, const std::string& name, const MarkRu
     std::int32_t side = 0;
     if (side_text == "starboard" || side_text == "+1" || side_text == "1") side = 1;
     else if (side_text == "port" || side_text == "-1") side = -1;
-    else csv.fail(3, "expected starboard, port, +1 or -1, found '" + std::string(side_text) + "'");
+    else csv.fail(3, "expected starboard, port, +1 or -1, found " + quoted_input(side_text));
     marks.time.push_back(t);
     marks.mine.push_back(mine);
     marks.range.push_back(range);

@@ -2,6 +2,7 @@
 
 #include "io/csv_number.h"
 #include "io/csv_reader.h"
+#include "io/message_text.h"
 
 namespace gesmi::io {
 
@@ -35,7 +36,7 @@ std::vector<double> read_truth_mines_csv(std::istream& in, const std::string& na
     const std::size_t i = mines.size() / 3;
     const std::optional<long long> mine = parse_integer(csv.text(0));
     if (!mine || *mine != static_cast<long long>(i))
-      csv.fail(0, "expected mine " + std::to_string(i) + " (mines 0..K-1 in order), found '" + std::string(csv.text(0)) + "'");
+      csv.fail(0, "expected mine " + std::to_string(i) + " (mines 0..K-1 in order), found " + quoted_input(csv.text(0)));
     for (std::size_t c = 1; c <= 3; ++c) mines.push_back(csv.number(c));
   }
   return mines;

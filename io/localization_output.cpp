@@ -78,6 +78,9 @@ std::string localization_summary(const LocalizationProblem& p, const Localizatio
               r.paving.inner.size(), r.paving.inner.volume(), r.paving.boundary.size(), r.paving.boundary.volume(), r.seconds);
   if (rep.limit_hit() || (r.gomne && r.gomne->limit_hit))
     s += "WARNING: a box or time limit was hit: undetermined boxes were kept unbisected\n";
+  if (rep.boxes_unsplittable > 0)
+    s += format("NOTE: %zu undetermined boxes were too narrow for doubles to bisect (epsilon is below the spacing of "
+                "doubles there): kept as boundary boxes\n", rep.boxes_unsplittable);
   s += format("hypotheses (connected components): %zu\n", r.hypotheses.size());
   for (std::size_t k = 0; k < r.hypotheses.size(); ++k) {
     const LocalizationHypothesis& h = r.hypotheses[k];

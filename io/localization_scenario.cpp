@@ -1,20 +1,23 @@
 #include "io/localization_scenario.h"
 
-#include <yaml-cpp/yaml.h>
-
+#include <algorithm>
+#include <cctype>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <set>
 #include <sstream>
 
+#include "io/csv_number.h"
 #include "io/format_error.h"
+#include "io/message_text.h"
+#include "io/strict_yaml.h"
 
 namespace gesmi::io {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr std::size_t kMaxNameLength = 200;
 
 // Reads one scenario, naming the file, line and key path in every error.
 class Reader {
@@ -29,8 +32,8 @@ class Reader {
   void only_keys(const YAML::Node& map, const std::string& key, std::set<std::string> allowed) const {
     if (!map.IsMap()) fail(map, key, "expected a mapping");
     for (const auto& entry : map) {
-      const std::string name = entry.first.as<std::string>();
-      if (!allowed.count(name)) fail(entry.first, key.empty() ? name : key + "." + name, "unknown key");
+      const std::string& name = entry.first.Scalar();  // keys are plain values (strict_yaml.h)
+      if (!allowed.count(name)) fail(entry.first, join(key, shown_key(name)), "unknown key");
     }
   }
 
@@ -46,7 +49,7 @@ class Reader {
     try {
       v = n.as<double>();
     } catch (const YAML::Exception&) {
-      fail(n, key, "expected a number, got '" + n.Scalar() + "'");
+      fail(n, key, "expected a number, got " + quoted_input(n.Scalar()));
     }
     if (!std::isfinite(v)) fail(n, key, "must be finite");
     return v;
@@ -76,6 +79,12 @@ class Reader {
   }
 
   static std::string join(const std::string& a, const std::string& b) { return a.empty() ? b : a + "." + b; }
+  // A key from the file as part of a key path: as it is when it is a plain name.
+  static std::string shown_key(const std::string& name) {
+    const bool plain = !name.empty() && name.size() <= kQuotedLength &&
+                       std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+    return plain ? name : quoted_input(name);
+  }
   static std::string item(const std::string& key, std::size_t i) { return key + "[" + std::to_string(i) + "]"; }
 
  private:
@@ -114,7 +123,7 @@ SensorIndex read_sensors(const Reader& r, const YAML::Node& root, LocalizationPr
     const std::string key = Reader::item("sensors", i);
     const std::string type = r.text(r.required(s, key, "type"), key + ".type");
     const std::string name = r.text(r.required(s, key, "name"), key + ".name");
-    if (index.count(name)) r.fail(s["name"], key + ".name", "duplicate sensor name '" + name + "'");
+    if (index.count(name)) r.fail(s["name"], key + ".name", "duplicate sensor name " + quoted_input(name));
     const double x = r.number_or(s, key, "x", 0.0), y = r.number_or(s, key, "y", 0.0);
     const double heading = r.number_or(s, key, "heading_deg", 0.0) * kDeg;
     if (type == "range") {
@@ -132,7 +141,7 @@ SensorIndex read_sensors(const Reader& r, const YAML::Node& root, LocalizationPr
       index[name] = {false, p.bearing_sensors.size()};
       p.bearing_sensors.push_back({name, x, y, heading, delta * kDeg});
     } else {
-      r.fail(s["type"], key + ".type", "expected 'range' or 'bearing', got '" + type + "'");
+      r.fail(s["type"], key + ".type", "expected 'range' or 'bearing', got " + quoted_input(type));
     }
   }
   return index;
@@ -146,7 +155,7 @@ void read_measurements(const Reader& r, const YAML::Node& root, const SensorInde
     const std::string key = Reader::item("measurements", i);
     const std::string sensor = r.text(r.required(m, key, "sensor"), key + ".sensor");
     const auto found = index.find(sensor);
-    if (found == index.end()) r.fail(m["sensor"], key + ".sensor", "unknown sensor '" + sensor + "'");
+    if (found == index.end()) r.fail(m["sensor"], key + ".sensor", "unknown sensor " + quoted_input(sensor));
     if (found->second.first) {
       r.only_keys(m, key, {"sensor", "range"});
       const double d = r.number(r.required(m, key, "range"), key + ".range");
@@ -192,6 +201,11 @@ void read_settings(const Reader& r, const YAML::Node& root, LocalizationProblem&
     r.fail(solver["epsilon_min"], "solver.epsilon_min", "must be positive and at most epsilon");
   p.theta_scale = r.number_or(solver, "solver", "theta_scale", 1.0);
   if (!(p.theta_scale > 0.0)) r.fail(solver["theta_scale"], "solver.theta_scale", "must be positive");
+  // Below this the bisection cannot meet epsilon near the prior's largest coordinates.
+  if (const double finest = finest_epsilon(p.priors, {1.0, 1.0, p.theta_scale}); p.epsilon < finest)
+    r.fail(solver["epsilon"], "solver.epsilon",
+           format_number(p.epsilon) + " is finer than doubles can split over the prior boxes: at least " +
+               format_number(finest));
   if (const YAML::Node c = solver["contractors"]) {
     if (!c.IsScalar() || (c.Scalar() != "true" && c.Scalar() != "false"))
       r.fail(c, "solver.contractors", "expected true or false");
@@ -226,7 +240,7 @@ void read_settings(const Reader& r, const YAML::Node& root, LocalizationProblem&
     if (outliers["extra"]) p.extra_outliers = count("extra", 0, n);
     if (outliers["max"]) p.max_outliers = count("max", 0, n);
   } else {
-    r.fail(outliers["policy"], "outliers.policy", "expected 'fixed' or 'minimal', got '" + policy + "'");
+    r.fail(outliers["policy"], "outliers.policy", "expected 'fixed' or 'minimal', got " + quoted_input(policy));
   }
 }
 
@@ -238,21 +252,17 @@ void read_truth(const Reader& r, const YAML::Node& root, LocalizationProblem& p)
                          r.number(r.required(truth, "truth", "theta_deg"), "truth.theta_deg") * kDeg};
 }
 
-}  // namespace
-
-LocalizationProblem parse_localization_scenario(std::istream& in, const std::string& source) {
+LocalizationProblem scenario_from(const YAML::Node& root, const std::string& source) {
   const Reader r(source);
-  YAML::Node root;
-  try {
-    root = YAML::Load(in);
-  } catch (const YAML::ParserException& e) {
-    throw FormatError(source + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
-  }
-  if (!root.IsMap()) throw FormatError(source + ": expected a YAML mapping at the top level");
+  if (root.IsNull()) throw FormatError(source + ": no YAML document: expected a scenario (docs/setinversion.md)");
   try {
     r.only_keys(root, "", {"name", "description", "map", "sensors", "measurements", "prior", "solver", "outliers", "truth"});
     LocalizationProblem p;
     p.name = root["name"] ? r.text(root["name"], "name") : std::string();
+    // The name titles the summary and the pictures and is stored as an HDF5 attribute.
+    if (p.name.size() > kMaxNameLength || one_line(p.name) != p.name)
+      r.fail(root["name"], "name", "expected one line of at most " + std::to_string(kMaxNameLength) +
+                                       " characters, got " + quoted_input(p.name));
     read_map(r, root, p);
     const SensorIndex index = read_sensors(r, root, p);
     read_measurements(r, root, index, p);
@@ -268,10 +278,16 @@ LocalizationProblem parse_localization_scenario(std::istream& in, const std::str
   }
 }
 
+}  // namespace
+
+LocalizationProblem parse_localization_scenario(std::istream& in, const std::string& source) {
+  std::ostringstream text;
+  text << in.rdbuf();
+  return scenario_from(load_strict_yaml(text.str(), source), source);
+}
+
 LocalizationProblem read_localization_scenario(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw FormatError(path + ": cannot open");
-  return parse_localization_scenario(in, path);
+  return scenario_from(load_strict_yaml_file(path), path);
 }
 
 std::string localization_measurements_yaml(const LocalizationProblem& p) {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "io/atomic_output.h"
+#include "io/csv_number.h"
 #include "io/format_error.h"
 #include "io/geodesy.h"
 #include "io/hdf5/h5_file.h"
@@ -52,8 +53,8 @@ void validate_mission(const Mission& m, const std::string& source) {
   expect_finite(m.time, source, "/nav/time", "time");
   for (std::size_t k = 1; k < n; ++k)
     if (!(m.time[k] > m.time[k - 1]))
-      bad(source, "/nav/time", row_text(k) + ": time does not increase (" + std::to_string(m.time[k]) + " after " +
-                                   std::to_string(m.time[k - 1]) + ")");
+      bad(source, "/nav/time", row_text(k) + ": time does not increase (" + format_number(m.time[k]) + " after " +
+                                   format_number(m.time[k - 1]) + ")");
   const std::pair<const std::vector<double>*, const char*> nav[] = {
       {&m.roll, "/nav/attitude roll"}, {&m.pitch, "/nav/attitude pitch"}, {&m.heading, "/nav/attitude heading"},
       {&m.vx, "/nav/velocity x"},      {&m.vy, "/nav/velocity y"},        {&m.vz, "/nav/velocity z"},
@@ -85,10 +86,10 @@ void validate_mission(const Mission& m, const std::string& source) {
   expect_finite(m.gps_time, source, "/gps/time", "time");
   for (std::size_t i = 0; i < g; ++i) {
     if (i > 0 && !(m.gps_time[i] > m.gps_time[i - 1]))
-      bad(source, "/gps/time", row_text(i) + ": fix times must increase (" + std::to_string(m.gps_time[i]) + " after " +
-                                   std::to_string(m.gps_time[i - 1]) + ")");
+      bad(source, "/gps/time", row_text(i) + ": fix times must increase (" + format_number(m.gps_time[i]) + " after " +
+                                   format_number(m.gps_time[i - 1]) + ")");
     if (m.gps_time[i] < m.time.front() || m.gps_time[i] > m.time.back())
-      bad(source, "/gps/time", row_text(i) + ": fix time " + std::to_string(m.gps_time[i]) + " s is outside the mission");
+      bad(source, "/gps/time", row_text(i) + ": fix time " + format_number(m.gps_time[i]) + " s is outside the mission");
     if (!std::isfinite(m.gps_latitude[i]) || std::fabs(m.gps_latitude[i]) > 90.0)
       bad(source, "/gps/lonlat", row_text(i) + ": latitude must be in [-90, 90]");
     if (!std::isfinite(m.gps_longitude[i]) || std::fabs(m.gps_longitude[i]) > 180.0)
@@ -110,14 +111,14 @@ void validate_mission(const Mission& m, const std::string& source) {
   expect_size(m.mark_side.size(), mk, source, "/marks/side");
   for (std::size_t j = 0; j < mk; ++j) {
     if (!std::isfinite(m.mark_time[j]) || m.mark_time[j] < m.time.front() || m.mark_time[j] > m.time.back())
-      bad(source, "/marks/time", row_text(j) + ": mark time " + std::to_string(m.mark_time[j]) +
-                                     " s is outside the mission [" + std::to_string(m.time.front()) + ", " +
-                                     std::to_string(m.time.back()) + "] s");
+      bad(source, "/marks/time", row_text(j) + ": mark time " + format_number(m.mark_time[j]) +
+                                     " s is outside the mission [" + format_number(m.time.front()) + ", " +
+                                     format_number(m.time.back()) + "] s");
     if (!std::isfinite(m.mark_range[j]) || m.mark_range[j] < 0.0)
       bad(source, "/marks/range", row_text(j) + ": range must be a finite number >= 0");
     if (m.mark_range[j] > m.model.sonar_max_range + m.model.mark_range)
-      bad(source, "/marks/range", row_text(j) + ": range " + std::to_string(m.mark_range[j]) +
-                                      " m is beyond the sonar's maximum range (" + std::to_string(m.model.sonar_max_range) + " m)");
+      bad(source, "/marks/range", row_text(j) + ": range " + format_number(m.mark_range[j]) +
+                                      " m is beyond the sonar's maximum range (" + format_number(m.model.sonar_max_range) + " m)");
     if (m.mark_side[j] != 1 && m.mark_side[j] != -1)
       bad(source, "/marks/side", row_text(j) + ": side must be +1 (starboard) or -1 (port), found " + std::to_string(m.mark_side[j]));
     if (m.mark_mine[j] < -1 || m.mark_mine[j] >= m.mine_count)
@@ -175,7 +176,7 @@ Mission read_mission(const std::string& path) {
   m.model.sonar_side = parse_sonar_side(*side, path + ": /model: sonar_side");
 
   // Navigation, read column by column into the flat arrays (one copy of the data).
-  m.time = f.read_doubles("/nav/time");
+  m.time = f.read_doubles("/nav/time", 1);
   const std::size_t n = m.time.size();
   const auto columns = [&](const std::string& dataset, std::vector<double>* out[3]) {
     const H5Shape s = f.shape(dataset);
@@ -191,11 +192,11 @@ Mission read_mission(const std::string& path) {
   std::vector<double>* velocity[3] = {&m.vx, &m.vy, &m.vz};
   columns("/nav/attitude", attitude);
   columns("/nav/velocity", velocity);
-  m.altitude = f.read_doubles("/nav/altitude");
-  m.depth = f.read_doubles("/nav/depth");
+  m.altitude = f.read_doubles("/nav/altitude", 1);
+  m.depth = f.read_doubles("/nav/depth", 1);
   for (int i = 0; i < 8; ++i) {
     const std::string name = std::string("/nav/half_widths/") + kHalfWidthNames[i];
-    if (f.has(name)) *half_width(m.half_widths, i) = f.read_doubles(name);
+    if (f.has(name)) *half_width(m.half_widths, i) = f.read_doubles(name, 1);
   }
   // Optional groups: absent, or complete.
   const auto require_all = [&](const std::string& group, std::initializer_list<const char*> datasets) {
@@ -206,7 +207,7 @@ Mission read_mission(const std::string& path) {
     return true;
   };
   if (require_all("/gps", {"time", "lonlat"})) {
-    m.gps_time = f.read_doubles("/gps/time");
+    m.gps_time = f.read_doubles("/gps/time", 1);
     const H5Shape s = f.shape("/gps/lonlat");
     if (s.rank != 2 || s.columns != 2 || s.rows != m.gps_time.size())
       throw FormatError(path + ": /gps/lonlat: expected " + std::to_string(m.gps_time.size()) + " x 2");
@@ -225,20 +226,20 @@ Mission read_mission(const std::string& path) {
     }
   }
   if (require_all("/marks", {"time", "mine", "range", "side"})) {
-    m.mark_time = f.read_doubles("/marks/time");
-    m.mark_mine = f.read_ints("/marks/mine");
-    m.mark_range = f.read_doubles("/marks/range");
-    m.mark_side = f.read_ints("/marks/side");
+    m.mark_time = f.read_doubles("/marks/time", 1);
+    m.mark_mine = f.read_ints("/marks/mine", 1);
+    m.mark_range = f.read_doubles("/marks/range", 1);
+    m.mark_side = f.read_ints("/marks/side", 1);
   }
   if (f.has("/truth/position")) {
     std::vector<double>* position[3] = {&m.truth_x, &m.truth_y, &m.truth_z};
     columns("/truth/position", position);
   }
-  if (f.has("/truth/mines")) m.truth_mines = f.read_doubles("/truth/mines");
-  if (f.has("/truth/missed_marks")) m.truth_missed_marks = f.read_doubles("/truth/missed_marks");
-  if (f.has("/truth/marks_outlier")) m.truth_marks_outlier = f.read_ints("/truth/marks_outlier");
-  if (f.has("/truth/marks_mine")) m.truth_marks_mine = f.read_ints("/truth/marks_mine");
-  if (f.has("/truth/gps_outlier")) m.truth_gps_outlier = f.read_ints("/truth/gps_outlier");
+  if (f.has("/truth/mines")) m.truth_mines = f.read_doubles("/truth/mines", 2);
+  if (f.has("/truth/missed_marks")) m.truth_missed_marks = f.read_doubles("/truth/missed_marks", 2);
+  if (f.has("/truth/marks_outlier")) m.truth_marks_outlier = f.read_ints("/truth/marks_outlier", 1);
+  if (f.has("/truth/marks_mine")) m.truth_marks_mine = f.read_ints("/truth/marks_mine", 1);
+  if (f.has("/truth/gps_outlier")) m.truth_gps_outlier = f.read_ints("/truth/gps_outlier", 1);
   validate_mission(m, path);
   fill_local_gps(m, path);
   return m;

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "io/atomic_output.h"
+#include "io/csv_number.h"
 #include "io/format_error.h"
 #include "io/hdf5/h5_digest.h"
 #include "io/hdf5/h5_file.h"
@@ -80,8 +81,8 @@ void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interva
       const double lo = lower[3 * k + c], hi = upper[3 * k + c];
       const bool empty = std::isnan(lo) && std::isnan(hi);
       if (!empty && !(lo <= hi && lo < INFINITY && hi > -INFINITY))
-        bad(f, prefix, "row " + std::to_string(k) + ": not an interval (lower " + std::to_string(lo) + ", upper " +
-                           std::to_string(hi) + ")");
+        bad(f, prefix, "row " + std::to_string(k) + ": not an interval (lower " + format_number(lo) + ", upper " +
+                           format_number(hi) + ")");
       (*axes[c])[k] = empty ? Interval::empty() : Interval(lo, hi);
     }
 }
@@ -189,7 +190,7 @@ SolveResult read_result(const std::string& path, bool with_waterfall) {
   for (const char* name : {"load", "build", "propagate", "waterfall", "write"})
     if (const auto ms = f.double_attribute("/", std::string("timing_") + name + "_ms")) s.timings_ms[name] = *ms;
 
-  s.time = f.read_doubles("/time");
+  s.time = f.read_doubles("/time", 1);
   const std::size_t n = s.time.size();
   if (verified) verify_digest(f, "/time", s.time, n, 1);
   if (n < 2) bad(f, "/time", "expected at least 2 samples");
@@ -218,16 +219,16 @@ SolveResult read_result(const std::string& path, bool with_waterfall) {
   for (std::size_t j = 0; j < cs.rows; ++j)
     for (std::size_t i = 0; i < k; ++i)
       if (candidates[j * k + i]) s.candidates[j] |= std::uint64_t{1} << i;
-  s.mark_outlier = f.read_ints("/marks/outlier");
-  s.mark_time = f.read_doubles("/marks/time");
-  s.mark_range = f.read_doubles("/marks/range");
-  s.mark_mine = f.read_ints("/marks/mine");
+  s.mark_outlier = f.read_ints("/marks/outlier", 1);
+  s.mark_time = f.read_doubles("/marks/time", 1);
+  s.mark_range = f.read_doubles("/marks/range", 1);
+  s.mark_mine = f.read_ints("/marks/mine", 1);
   // Results of gesmi 0.1 kept no sides: a warm start needs them, and refuses those anyway.
-  s.mark_side = verified ? f.read_ints("/marks/side") : std::vector<std::int32_t>(marks, 0);
+  s.mark_side = verified ? f.read_ints("/marks/side", 1) : std::vector<std::int32_t>(marks, 0);
   if (s.mark_outlier.size() != marks || s.mark_time.size() != marks || s.mark_range.size() != marks ||
       s.mark_mine.size() != marks || s.mark_side.size() != marks)
     bad(f, "/marks", "expected " + std::to_string(marks) + " rows in every dataset");
-  s.gps_outlier = f.read_ints("/gps/outlier");
+  s.gps_outlier = f.read_ints("/gps/outlier", 1);
   if (verified) {
     verify_digest(f, "/marks/outlier", s.mark_outlier, marks, 1);
     verify_digest(f, "/marks/time", s.mark_time, marks, 1);

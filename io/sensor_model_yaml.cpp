@@ -1,46 +1,41 @@
 #include "io/sensor_model_yaml.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <cmath>
 #include <sstream>
 
 #include "io/format_error.h"
+#include "io/message_text.h"
 #include "io/sensor_model_attributes.h"
 #include "io/sonar_side.h"
+#include "io/strict_yaml.h"
 
 namespace gesmi::io {
 
 void merge_sensor_model_yaml(const std::string& path, SensorModel& model) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw FormatError(path + ": cannot open the file (does it exist?)");
-  } catch (const YAML::Exception& e) {
-    throw FormatError(path + ": line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
-  }
-  if (root.IsNull()) return;  // an empty file changes nothing
-  if (!root.IsMap()) throw FormatError(path + ": expected a mapping of key: value");
+  const YAML::Node root = load_strict_yaml_file(path);
+  if (root.IsNull()) return;  // a file without a document (empty, or only comments) changes nothing
   SensorModel updated = model;
   for (const auto& entry : root) {
-    const std::string key = entry.first.as<std::string>();
-    const std::string where = path + ": line " + std::to_string(entry.first.Mark().line + 1) + ": " + key;
-    if (key == "sonar_side") {
-      if (!entry.second.IsScalar()) throw FormatError(where + ": expected starboard, port or both");
-      updated.sonar_side = parse_sonar_side(entry.second.as<std::string>(), where);
-      continue;
-    }
+    const std::string key = entry.first.Scalar();
+    const std::string line = path + ":" + std::to_string(entry.first.Mark().line + 1);
     const ModelField* field = nullptr;
     for (const ModelField& f : model_fields())
       if (f.key == key) field = &f;
-    if (!field) throw FormatError(where + ": unknown key (docs/formats.md lists the sensor model keys)");
+    if (!field && key != "sonar_side")
+      throw FormatError(line + ": unknown key " + quoted_input(key) + " (docs/formats.md lists the sensor model keys)");
+    const std::string where = line + ": " + key;
+    if (!field) {
+      if (!entry.second.IsScalar()) throw FormatError(where + ": expected starboard, port or both");
+      updated.sonar_side = parse_sonar_side(entry.second.Scalar(), where);
+      continue;
+    }
     double value = 0.0;
     try {
       if (!entry.second.IsScalar()) throw YAML::Exception(entry.second.Mark(), "not a number");
       value = entry.second.as<double>();
     } catch (const YAML::Exception&) {
-      throw FormatError(where + ": expected a number");
+      throw FormatError(where + ": expected a number" +
+                        (entry.second.IsScalar() ? ", found " + quoted_input(entry.second.Scalar()) : std::string()));
     }
     if (!std::isfinite(value) || value < 0.0) throw FormatError(where + ": must be a finite number >= 0");
     updated.*field->member = value;

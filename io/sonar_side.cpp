@@ -1,6 +1,7 @@
 #include "io/sonar_side.h"
 
 #include "io/format_error.h"
+#include "io/message_text.h"
 
 namespace gesmi::io {
 
@@ -17,7 +18,7 @@ SonarSide parse_sonar_side(const std::string& text, const std::string& context) 
   if (text == "starboard") return SonarSide::starboard;
   if (text == "port") return SonarSide::port;
   if (text == "both") return SonarSide::both;
-  throw FormatError(context + ": expected starboard, port or both, found '" + text + "'");
+  throw FormatError(context + ": expected starboard, port or both, found " + quoted_input(text));
 }
 
 }  // namespace gesmi::io

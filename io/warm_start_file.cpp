@@ -1,6 +1,7 @@
 #include "io/warm_start_file.h"
 
 #include "io/format_error.h"
+#include "io/io_version.h"
 #include "io/mission_digest.h"
 #include "io/result_file.h"
 #include "solver/solve/solve_mission.h"
@@ -12,6 +13,10 @@ MissionSolution read_warm_start(const std::string& path, const Mission& mission)
   const auto refuse = [&](const std::string& why) { throw FormatError("--from " + path + ": " + why); };
   if (previous.format_version < 2)
     refuse("written by an earlier gesmi, without the digests a warm start checks; run a cold solve");
+  // Another gesmi may enclose differently (a widened box, a fixed margin): its domains
+  // are not the ones this gesmi would start from.
+  if (previous.version != version())
+    refuse("computed by gesmi " + previous.version + ", this is gesmi " + std::string(version()) + "; run a cold solve");
   if (previous.navigation_digest != navigation_digest(mission))
     refuse("the navigation data (DVL, attitude, depth, altitude, GPS) differ from the mission it was computed on; run a cold solve");
   if (previous.bounds_digest != bounds_digest(mission.model))

@@ -80,9 +80,10 @@ class H5File {
 
   /// Reads a whole dataset (1-D, or 2-D row-major) as doubles: floating-point data
   /// of up to 64 bits, or integers whose values doubles hold exactly.
-  std::vector<double> read_doubles(const std::string& dataset) const;
+  /// rank: the number of dimensions the format gives the dataset (0: 1 or 2).
+  std::vector<double> read_doubles(const std::string& dataset, int rank = 0) const;
   /// Reads a whole dataset of integers that fit in 32 bits.
-  std::vector<std::int32_t> read_ints(const std::string& dataset) const;
+  std::vector<std::int32_t> read_ints(const std::string& dataset, int rank = 0) const;
   /// Reads into a caller-sized buffer (no extra copy); sizes must match.
   void read_doubles_into(const std::string& dataset, std::span<double> out) const;
   /// Reads one column of a 2-D dataset straight into out (rows values): a mission's
@@ -121,7 +122,7 @@ class H5File {
   H5Handle open_dataset(const std::string& dataset) const;
   H5Handle open_attribute(const std::string& object, const std::string& name) const;
   /// The shape, once class and stored size are known to be readable (integers or numbers).
-  H5Shape checked_shape(const std::string& dataset, bool integers) const;
+  H5Shape checked_shape(const std::string& dataset, bool integers, int rank = 0) const;
   void read_checked(const std::string& dataset, std::span<double> out, std::size_t column) const;
   H5Handle file_;
   std::string path_;

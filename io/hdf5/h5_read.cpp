@@ -67,8 +67,10 @@ std::string storage_problem(hid_t dataset, std::size_t values, std::size_t type_
 
 }  // namespace
 
-H5Shape H5File::checked_shape(const std::string& dataset, bool integers) const {
+H5Shape H5File::checked_shape(const std::string& dataset, bool integers, int rank) const {
   const H5Shape s = shape(dataset);
+  if (rank != 0 && s.rank != rank)
+    fail(dataset, "expected " + std::to_string(rank) + " dimension" + (rank == 1 ? "" : "s") + ", found " + std::to_string(s.rank));
   const H5Handle d = open_dataset(dataset);
   const H5Handle type(H5Dget_type(d.get()), H5Tclose);
   if (!type.valid()) fail(dataset, "cannot read its type (damaged file?)");
@@ -132,15 +134,15 @@ void H5File::read_column_into(const std::string& dataset, std::size_t column, st
   read_checked(dataset, out, column);
 }
 
-std::vector<double> H5File::read_doubles(const std::string& dataset) const {
-  const H5Shape s = checked_shape(dataset, false);  // before allocating
+std::vector<double> H5File::read_doubles(const std::string& dataset, int rank) const {
+  const H5Shape s = checked_shape(dataset, false, rank);  // before allocating
   std::vector<double> values(s.rows * s.columns);
   read_checked(dataset, values, std::string::npos);
   return values;
 }
 
-std::vector<std::int32_t> H5File::read_ints(const std::string& dataset) const {
-  const H5Shape s = checked_shape(dataset, true);  // before allocating
+std::vector<std::int32_t> H5File::read_ints(const std::string& dataset, int rank) const {
+  const H5Shape s = checked_shape(dataset, true, rank);  // before allocating
   const H5Handle d = open_dataset(dataset);
   const std::size_t count = s.rows * s.columns;
   // Read as 64 bits (HDF5 clips larger unsigned values, which the range check then refuses).

@@ -54,8 +54,9 @@ struct GomneResult {
   int q_lower = 0;        // every S_q with q < q_lower was proved empty
   int q_used = -1;        // q_star + extra_outliers: the set the pavings enclose
   double epsilon = 0.0;   // accuracy of the final pavings
-  /// Remark 3: some S_q stayed undetermined down to epsilon_min, so only the outer
-  /// guarantee S* ⊂ inner ∪ boundary holds, and j* lies in [q_lower, q_star].
+  /// Remark 3: some S_q stayed undetermined down to epsilon_min (or down to boxes too
+  /// narrow for doubles to bisect), so only the outer guarantee S* ⊂ inner ∪ boundary
+  /// holds, and j* lies in [q_lower, q_star].
   bool epsilon_min_reached = false;
   bool limit_hit = false; // a box or time limit stopped the run: no emptiness proof
   SiviaResult paving;
@@ -153,7 +154,10 @@ GomneResult gomne(Data& data, std::span<const Box> priors, const GomneOptions& o
         if (result.q_lower == q) result.q_lower = q + 1;
         break;
       }
-      if (epsilon / 2.0 < options.epsilon_min) {  // Remark 3: give up on this q
+      // Remark 3: give up on this q at epsilon_min, or sooner when epsilon stopped no
+      // box (every undetermined box was too narrow for doubles to split): halving it
+      // would give the same result again.
+      if (epsilon / 2.0 < options.epsilon_min || r.report.boxes_at_epsilon == 0) {
         result.epsilon_min_reached = true;
         result.paving = std::move(r);
         result.epsilon = epsilon;

@@ -1,8 +1,10 @@
 #include "solver/setinv/sivia.h"
 
+#include <cmath>
+
 namespace gesmi::detail {
 
-std::pair<std::size_t, double> widest_dimension(const Box& box, const std::vector<double>& scale) {
+std::pair<std::size_t, double> widest_dimension(std::span<const Interval> box, const std::vector<double>& scale) {
   std::size_t best = 0;
   double best_width = -1.0;
   for (std::size_t k = 0; k < box.size(); ++k) {
@@ -13,6 +15,12 @@ std::pair<std::size_t, double> widest_dimension(const Box& box, const std::vecto
     }
   }
   return {best, best_width};
+}
+
+bool can_bisect(std::span<const Interval> box, const std::vector<double>& scale) {
+  const Interval& side = box[widest_dimension(box, scale).first];
+  const double m = side.mid();
+  return side.lo() < m && m < side.hi();
 }
 
 Box wrap_prior(const Box& prior, const SiviaOptions& options) {
@@ -28,3 +36,19 @@ Box wrap_prior(const Box& prior, const SiviaOptions& options) {
 }
 
 }  // namespace gesmi::detail
+
+namespace gesmi {
+
+double finest_epsilon(std::span<const Box> priors, const std::vector<double>& scale) {
+  double finest = 0.0;
+  for (const Box& box : priors)
+    for (std::size_t k = 0; k < box.size(); ++k) {
+      const double magnitude = box[k].mag();
+      if (!std::isfinite(magnitude)) continue;
+      const double spacing = std::nextafter(magnitude, kInf) - magnitude;
+      finest = std::max(finest, 2.0 * spacing * (scale.empty() ? 1.0 : scale[k]));
+    }
+  return finest;
+}
+
+}  // namespace gesmi

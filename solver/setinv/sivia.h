@@ -13,6 +13,12 @@
 //
 // Memory: one scratch box per recursion level, reused; the only growing storage is
 // the two pavings.
+//
+// Depth: a box is bisected only when the midpoint of its widest side lies strictly
+// inside it (detail::can_bisect); otherwise it is kept as a boundary box and counted
+// in SiviaReport::boxes_unsplittable, whatever epsilon asks. Halving a double interval
+// that way ends after at most about 2100 steps (52 bits of mantissa and 2046 binades),
+// so the recursion is at most about 2100 levels per dimension deep.
 
 #include <algorithm>
 #include <chrono>
@@ -45,7 +51,11 @@ concept BoxTest = DepthBoxTest<T> || PlainBoxTest<T>;
 namespace detail {
 
 /// Index of the dimension to bisect: the widest after scaling; its scaled width.
-std::pair<std::size_t, double> widest_dimension(const Box& box, const std::vector<double>& scale);
+std::pair<std::size_t, double> widest_dimension(std::span<const Interval> box, const std::vector<double>& scale);
+/// Whether bisecting the box's widest dimension makes progress: its midpoint lies
+/// strictly between its bounds. Two adjacent doubles have no double between them,
+/// so below that width "halving" returns the box itself and would recurse forever.
+bool can_bisect(std::span<const Interval> box, const std::vector<double>& scale);
 /// A prior with its periodic dimension cut to one period.
 Box wrap_prior(const Box& prior, const SiviaOptions& options);
 
@@ -132,7 +142,13 @@ class SiviaRun {
       return Verdict::outside;
     } else {
       const auto [dim, width] = widest_dimension(level(depth), options_.scale);
-      if (width < options_.epsilon || result_.report.limit_hit()) {
+      if (result_.report.limit_hit()) {
+        v = Verdict::boundary;
+      } else if (width < options_.epsilon) {
+        ++result_.report.boxes_at_epsilon;
+        v = Verdict::boundary;
+      } else if (!can_bisect(level(depth), options_.scale)) {
+        ++result_.report.boxes_unsplittable;
         v = Verdict::boundary;
       } else {
         make_child(depth, dim, false);
@@ -173,6 +189,13 @@ class SiviaRun {
 };
 
 }  // namespace detail
+
+/// The smallest epsilon that bisection can reach everywhere in the priors: twice the
+/// spacing of doubles at each dimension's largest magnitude, times its scale, for the
+/// widest dimension. A smaller epsilon is met nowhere near that magnitude: boxes
+/// there end as unsplittable boundary boxes (detail::can_bisect), after as many boxes
+/// as the set has boundary at the spacing of doubles.
+double finest_epsilon(std::span<const Box> priors, const std::vector<double>& scale);
 
 /// Inner and boundary subpavings of {p in priors : T(p) = true}. The options must
 /// be valid (SiviaOptions::validate) and the priors of one dimension.

@@ -47,6 +47,12 @@ struct SiviaReport {
   std::size_t boxes_visited = 0;    // boxes whose test was evaluated
   std::size_t boxes_contracted = 0; // boxes narrowed by the contractor
   int max_depth = 0;
+  /// Undetermined boxes kept in the boundary subpaving because they are narrower
+  /// than epsilon, and those still wider whose widest side doubles cannot split (its
+  /// midpoint is one of its bounds). With none of the first kind, a smaller epsilon
+  /// gives the same result.
+  std::size_t boxes_at_epsilon = 0;
+  std::size_t boxes_unsplittable = 0;
   bool box_limit_hit = false;
   bool time_limit_hit = false;
   double seconds = 0.0;

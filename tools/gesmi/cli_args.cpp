@@ -6,6 +6,8 @@
 #include <iostream>
 #include <vector>
 
+#include "io/message_text.h"
+
 namespace po = boost::program_options;
 
 namespace gesmi::cli {
@@ -16,15 +18,15 @@ double parse_double(std::string_view option, const std::string& text) {
   errno = 0;
   const double value = std::strtod(begin, &end);
   if (text.empty() || end != begin + text.size() || std::isnan(value) || (errno == ERANGE && std::isfinite(value) && value != 0.0))
-    throw UsageError(std::string(option) + ": expected a number, got '" + text + "'");
+    throw UsageError(std::string(option) + ": expected a number, got " + io::quoted_input(text));
   if (errno == ERANGE && !std::isfinite(value) && text.find_first_of("iI") == std::string::npos)
-    throw UsageError(std::string(option) + ": number out of range: '" + text + "'");
+    throw UsageError(std::string(option) + ": number out of range: " + io::quoted_input(text));
   return value;
 }
 
 double parse_non_negative(std::string_view option, const std::string& text) {
   const double value = parse_double(option, text);
-  if (value < 0.0) throw UsageError(std::string(option) + ": must not be negative, got '" + text + "'");
+  if (value < 0.0) throw UsageError(std::string(option) + ": must not be negative, got " + io::quoted_input(text));
   return value;
 }
 
@@ -34,7 +36,7 @@ long long parse_integer(std::string_view option, const std::string& text) {
   errno = 0;
   const long long value = std::strtoll(begin, &end, 10);
   if (text.empty() || end != begin + text.size() || errno == ERANGE)
-    throw UsageError(std::string(option) + ": expected an integer, got '" + text + "'");
+    throw UsageError(std::string(option) + ": expected an integer, got " + io::quoted_input(text));
   return value;
 }
 

@@ -3,13 +3,14 @@
 
 #include <cstdio>
 
-#include "io/output_set.h"
 #include "io/atomic_output.h"
 #include "io/export_csv.h"
 #include "io/export_gesmi_txt.h"
+#include "io/message_text.h"
 #include "io/mission_file.h"
-#include "tools/gesmi/input_files.h"
+#include "io/output_set.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/input_files.h"
 
 namespace gesmi::cli {
 namespace {
@@ -28,7 +29,7 @@ int run_export(std::span<const std::string> args) {
   if (!parse_options(args, options, positional, v, "gesmi export MISSION.h5 -o DIR [--format csv|gesmi-txt]"))
     return kExitOk;
   const std::string format = v["format"].as<std::string>(), output = v["output"].as<std::string>();
-  if (format != "csv" && format != "gesmi-txt") throw UsageError("--format: expected csv or gesmi-txt, got '" + format + "'");
+  if (format != "csv" && format != "gesmi-txt") throw UsageError("--format: expected csv or gesmi-txt, got " + io::quoted_input(format));
   io::OutputSet outputs(input_files(v, {"mission"}));
   if (format == "csv")
     io::check_export_folder(output);
@@ -44,7 +45,7 @@ int run_export(std::span<const std::string> args) {
                 m.truth_mines.empty() ? "" : ", truth_mines.csv");
     return kExitOk;
   }
-  io::export_gesmi_txt(m, output);
+  io::export_gesmi_txt(m, v["mission"].as<std::string>(), output);
   outputs.commit();
   std::printf("wrote %s: %zu rows, %zu position fixes (marks are not part of the GESMI text format)\n", output.c_str(),
               m.size(), m.gps_time.size());

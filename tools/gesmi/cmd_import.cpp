@@ -6,6 +6,7 @@
 #include "io/output_set.h"
 #include "io/atomic_output.h"
 #include "io/import_mission.h"
+#include "io/message_text.h"
 #include "io/mission_file.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
@@ -17,12 +18,12 @@ namespace po = boost::program_options;
 
 GeoOrigin parse_origin(const std::string& text) {
   const std::size_t comma = text.find(',');
-  if (comma == std::string::npos) throw UsageError("--origin: expected LAT,LON in degrees, got '" + text + "'");
+  if (comma == std::string::npos) throw UsageError("--origin: expected LAT,LON in degrees, got " + io::quoted_input(text));
   const GeoOrigin o{parse_double("--origin", text.substr(0, comma)), parse_double("--origin", text.substr(comma + 1))};
   if (!std::isfinite(o.latitude) || std::fabs(o.latitude) > 89.0)
-    throw UsageError("--origin: latitude must be in [-89, 89] degrees, got '" + text + "'");
+    throw UsageError("--origin: latitude must be in [-89, 89] degrees, got " + io::quoted_input(text));
   if (!std::isfinite(o.longitude) || std::fabs(o.longitude) > 180.0)
-    throw UsageError("--origin: longitude must be in [-180, 180] degrees, got '" + text + "'");
+    throw UsageError("--origin: longitude must be in [-180, 180] degrees, got " + io::quoted_input(text));
   return o;
 }
 
@@ -121,7 +122,7 @@ int import_gesmi_txt(std::span<const std::string> args) {
                      "[--marks MARKS.csv] [--mines K] -o OUT.h5"))
     return kExitOk;
   const std::string xy = v["xy"].as<std::string>();
-  if (xy != "fixes" && xy != "truth") throw UsageError("--xy: expected fixes or truth, got '" + xy + "'");
+  if (xy != "fixes" && xy != "truth") throw UsageError("--xy: expected fixes or truth, got " + io::quoted_input(xy));
   const std::string output = v["output"].as<std::string>();
   io::OutputSet outputs(input_files(v, {"log", "marks", "config"}));
   outputs.check(output);
@@ -147,7 +148,7 @@ int run_import(std::span<const std::string> args) {
     std::printf("usage: gesmi import marks|nav|gesmi-txt ... ('gesmi import nav --help'; formats in docs/formats.md)\n");
     return kExitOk;
   }
-  throw UsageError("unknown kind '" + kind + "': expected marks, nav or gesmi-txt");
+  throw UsageError("unknown kind " + io::quoted_input(kind) + ": expected marks, nav or gesmi-txt");
 }
 
 const bool registered = register_command({"import", "make or update a mission from CSV or GESMI text files", run_import});

@@ -5,6 +5,7 @@
 
 #include "io/output_set.h"
 #include "io/atomic_output.h"
+#include "io/message_text.h"
 #include "io/mission_file.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
@@ -56,23 +57,23 @@ int add_mark(std::span<const std::string> args) {
   const double time = parse_double("--time", v["time"].as<std::string>());
   const double range = parse_double("--range", v["range"].as<std::string>());
   const std::string side = v["side"].as<std::string>(), mine_text = v["mine"].as<std::string>();
-  if (side != "starboard" && side != "port") throw UsageError("--side: expected starboard or port, got '" + side + "'");
+  if (side != "starboard" && side != "port") throw UsageError("--side: expected starboard or port, got " + io::quoted_input(side));
   const std::string output = v["output"].as<std::string>();
   io::OutputSet outputs(input_files(v, {"mission"}));
   outputs.check(output);
   Mission m = io::read_mission(v["mission"].as<std::string>());
   if (!std::isfinite(time) || time < m.time.front() || time > m.time.back())
-    throw UsageError("--time: " + v["time"].as<std::string>() + " s is outside the mission [" +
+    throw UsageError("--time: " + io::quoted_input(v["time"].as<std::string>()) + " s is outside the mission [" +
                      seconds(m.time.front()) + ", " + seconds(m.time.back()) + "] s");
   if (!std::isfinite(range) || range < 0.0) throw UsageError("--range: must be a number >= 0");
   if (range > m.model.sonar_max_range)
-    throw UsageError("--range: " + v["range"].as<std::string>() + " m is beyond the sonar's maximum range (" +
+    throw UsageError("--range: " + io::quoted_input(v["range"].as<std::string>()) + " m is beyond the sonar's maximum range (" +
                      seconds(m.model.sonar_max_range) + " m)");
   int mine = -1;
   if (mine_text != "?") {
     const long long i = parse_integer("--mine", mine_text);
     if (i < 0 || i >= m.mine_count)
-      throw UsageError("--mine: mine " + mine_text + " is not one of the mission's " + std::to_string(m.mine_count) +
+      throw UsageError("--mine: mine " + io::quoted_input(mine_text) + " is not one of the mission's " + std::to_string(m.mine_count) +
                        " mines (0.." + std::to_string(m.mine_count - 1) + ", or ? when unknown)");
     mine = static_cast<int>(i);
   }
@@ -106,7 +107,7 @@ int remove_mark(std::span<const std::string> args) {
   Mission m = io::read_mission(v["mission"].as<std::string>());
   const long long index = parse_integer("INDEX", v["index"].as<std::string>());
   if (index < 0 || static_cast<std::size_t>(index) >= m.mark_count())
-    throw UsageError("INDEX: " + v["index"].as<std::string>() + " is not a row of the mark table (0.." +
+    throw UsageError("INDEX: " + io::quoted_input(v["index"].as<std::string>()) + " is not a row of the mark table (0.." +
                      std::to_string(static_cast<long long>(m.mark_count()) - 1) + ")");
   const auto at = static_cast<std::ptrdiff_t>(index);
   m.mark_time.erase(m.mark_time.begin() + at);
@@ -131,7 +132,7 @@ int run_marks(std::span<const std::string> args) {
     std::printf("usage: gesmi marks list|add|remove ... ('gesmi marks add --help')\n");
     return kExitOk;
   }
-  throw UsageError("unknown action '" + action + "': expected list, add or remove");
+  throw UsageError("unknown action " + io::quoted_input(action) + ": expected list, add or remove");
 }
 
 const bool registered = register_command({"marks", "list, add or remove operator marks", run_marks});

@@ -5,6 +5,7 @@
 #include "io/output_set.h"
 #include "io/atomic_output.h"
 #include "io/geodesy.h"
+#include "io/message_text.h"
 #include "io/mission_file.h"
 #include "io/sensor_model_yaml.h"
 #include "solver/sim/simulator.h"
@@ -37,7 +38,7 @@ int run_simulate(std::span<const std::string> args) {
   po::variables_map v;
   if (!parse_options(args, options, {}, v, kUsage)) return kExitOk;
   if (v["preset"].as<std::string>() != "redermor")
-    throw UsageError("--preset: unknown preset '" + v["preset"].as<std::string>() + "' (available: redermor)");
+    throw UsageError("--preset: unknown preset " + io::quoted_input(v["preset"].as<std::string>()) + " (available: redermor)");
   SimulationOptions o;
   const long long seed = parse_integer("--seed", v["seed"].as<std::string>());
   if (seed < 0) throw UsageError("--seed: must be >= 0");
@@ -48,14 +49,15 @@ int run_simulate(std::span<const std::string> args) {
   else if (errors == "worst-case")
     o.errors = SimulatedErrors::worst_case;
   else
-    throw UsageError("--errors: expected uniform or worst-case, got '" + errors + "'");
+    throw UsageError("--errors: expected uniform or worst-case, got " + io::quoted_input(errors));
   o.duration = parse_double("--duration", v["duration"].as<std::string>());
   o.rate = parse_double("--rate", v["rate"].as<std::string>());
   o.mines = static_cast<int>(parse_integer("--mines", v["mines"].as<std::string>()));
   o.missed = parse_double("--missed", v["missed"].as<std::string>());
   o.unassociated = parse_double("--unassociated", v["unassociated"].as<std::string>());
   o.outliers = static_cast<int>(parse_integer("--outliers", v["outliers"].as<std::string>()));
-  if (const std::string why = o.validate(); !why.empty()) throw UsageError(why);
+  // Each reason starts with the option it is about ("missed must be ...").
+  if (const std::string why = o.validate(); !why.empty()) throw UsageError("--" + why);
   const std::string output = v["output"].as<std::string>();
   io::OutputSet outputs(input_files(v, {"config"}));
   outputs.check(output);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "io/format_error.h"
+#include "io/message_text.h"
 #include "tools/gesmi/command.h"
 
 namespace gesmi::cli {
@@ -33,6 +34,12 @@ void print_help() {
   std::printf("\n'gesmi <command> --help' describes a command. Exit codes: 0 ok, 2 bad input, 3 inconsistent data.\n");
 }
 
+// Every message leaves through here: one line whatever it holds (control characters
+// and bytes that are not UTF-8 from paths or input are escaped; io/message_text.h).
+void report(const std::string& who, const std::string& message) {
+  std::fprintf(stderr, "%s: %s\n", who.c_str(), gesmi::io::one_line(message).c_str());
+}
+
 }  // namespace
 }  // namespace gesmi::cli
 
@@ -46,22 +53,23 @@ int main(int argc, char** argv) {
   const auto& all = commands();
   const auto found = std::find_if(all.begin(), all.end(), [&](const Command& c) { return c.name == args[0]; });
   if (found == all.end()) {
-    std::fprintf(stderr, "gesmi: unknown command '%s'; 'gesmi --help' lists the commands\n", args[0].c_str());
+    report("gesmi", "unknown command " + gesmi::io::quoted_input(args[0]) + "; 'gesmi --help' lists the commands");
     return kExitBadInput;
   }
+  const std::string who = "gesmi " + args[0];
   try {
     return found->run(std::span<const std::string>(args).subspan(1));
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "gesmi %s: %s\n", args[0].c_str(), e.what());
+    report(who, e.what());
     return kExitBadInput;
   } catch (const gesmi::io::FormatError& e) {
-    std::fprintf(stderr, "gesmi %s: %s\n", args[0].c_str(), e.what());
+    report(who, e.what());
     return kExitBadInput;
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "gesmi %s: out of memory\n", args[0].c_str());
+    report(who, "out of memory");
     return kExitInternal;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "gesmi %s: internal error: %s (please report it)\n", args[0].c_str(), e.what());
+    report(who, std::string("internal error: ") + e.what() + " (please report it)");
     return kExitInternal;
   }
 }

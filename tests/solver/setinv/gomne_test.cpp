@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "solver/setinv/outlier_sets.h"
@@ -198,6 +199,32 @@ TEST(Gomne, EpsilonMinStopsHalvingWhenTheSetHasNoInterior) {
   EXPECT_EQ(r.q_star, 2);  // S_1 is two lines: no interior either
   EXPECT_FALSE(r.exact());
   EXPECT_TRUE(in_pavings(r.paving, 0.5, 0.5));
+}
+
+// One datum, undetermined on every box holding P and false elsewhere.
+struct NearPoint {
+  double x, y;
+  std::size_t datum_count() const { return 1; }
+  void evaluate(const Box& box, int, std::span<IBool> out, int) const {
+    out[0] = box[0].contains(x) && box[1].contains(y) ? IBool::maybe() : IBool(false);
+  }
+};
+
+TEST(Gomne, StopsHalvingEpsilonWhenNoBoundaryBoxCanBeSplit) {
+  // Around (1/3, 1/3) doubles are 2^-54 apart: from epsilon0 = 2^-10 about 45
+  // halvings reach them. Halving on down to epsilon_min (the smallest subnormal)
+  // would take over 1000 more SIVIA runs that change nothing.
+  NearPoint data{1.0 / 3.0, 1.0 / 3.0};
+  const Box prior{Interval(0, 1), Interval(0, 1)};
+  GomneOptions options;
+  options.epsilon0 = std::ldexp(1.0, -10);
+  options.epsilon_min = std::numeric_limits<double>::denorm_min();
+  options.max_outliers = 0;
+  const GomneResult r = gomne(data, std::span<const Box>(&prior, 1), options);
+  EXPECT_TRUE(r.epsilon_min_reached);
+  EXPECT_FALSE(r.found);
+  EXPECT_LT(r.steps.size(), 50u);
+  EXPECT_TRUE(in_pavings(r.paving, data.x, data.y));
 }
 
 }  // namespace

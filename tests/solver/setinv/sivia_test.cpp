@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -205,6 +206,42 @@ TEST(Sivia, GenericApiInvertsAParameterEstimationModel) {
     }
   }
   EXPECT_GT(consistent, 10);
+}
+
+// The set {P}: undetermined on every box holding P, whatever its width, so only the
+// spacing of doubles can stop the bisection.
+struct HoldsPoint {
+  double x, y;
+  IBool operator()(const Box& box) const {
+    return box[0].contains(x) && box[1].contains(y) ? IBool::maybe() : IBool(false);
+  }
+};
+
+TEST(Sivia, EpsilonBelowTheSpacingOfDoublesEndsAtUnsplittableBoxes) {
+  // The widest side is bisected: both sides shrink together until the x side, near
+  // 1/3 where doubles are 2^-54 apart, cannot be split (about 55 halvings of [-1, 1]
+  // each). y, near -3e-310, could go on to subnormal widths, but the widest side
+  // decides: the depth is bounded by the spacing of doubles, not by epsilon.
+  HoldsPoint test{1.0 / 3.0, -3e-310};
+  SiviaOptions options;
+  options.epsilon = std::numeric_limits<double>::denorm_min();
+  const SiviaResult r = sivia(test, Box{Interval(-1, 1), Interval(-1, 1)}, options);
+  EXPECT_GE(r.report.boxes_unsplittable, 1u);
+  EXPECT_TRUE(r.inner.empty());
+  EXPECT_TRUE(in_paving(r.boundary, test.x, test.y));
+  EXPECT_EQ(r.report.boxes_at_epsilon, 0u);
+  EXPECT_GE(r.report.max_depth, 2 * 54);
+  EXPECT_LE(r.report.max_depth, 2 * 56);
+  // Each boundary box is one unsplittable box, or two merged back into their father.
+  for (std::size_t i = 0; i < r.boundary.size(); ++i)
+    EXPECT_LE(r.boundary.box(i)[0].width(), std::ldexp(1.0, -53));
+}
+
+TEST(Sivia, FinestEpsilonIsTwiceTheSpacingOfDoublesAtTheLargestScaledMagnitude) {
+  // Spacing of doubles: 2^-49 in [8, 16), 2^-52 in [1, 2), 2^-51 in [2, 4).
+  const Box prior{Interval(-10, 4), Interval(0, 1), Interval(-std::numbers::pi, std::numbers::pi)};
+  EXPECT_EQ(finest_epsilon(std::span<const Box>(&prior, 1), {1.0, 1.0, 1.0}), std::ldexp(1.0, -48));
+  EXPECT_EQ(finest_epsilon(std::span<const Box>(&prior, 1), {1.0, 1.0, 16.0}), std::ldexp(1.0, -46));
 }
 
 }  // namespace
