@@ -1,0 +1,124 @@
+"""The gesmi Python module against the gesmi command: the same result files bit for
+bit, the same one-line errors, and an operator loop (add a mark, warm solve)."""
+import math
+import os
+
+import h5py
+import numpy as np
+import pytest
+
+import gesmi
+from conftest import run_gesmi
+
+
+def datasets(path):
+    out = {}
+    with h5py.File(path, "r") as f:
+        f.visititems(lambda name, obj: out.__setitem__(name, obj[()]) if isinstance(obj, h5py.Dataset) else None)
+        attrs = {k: v for k, v in f.attrs.items() if not k.startswith("timing_")}
+    return out, attrs
+
+
+def test_a_solve_from_python_equals_the_command_bit_for_bit(mission_file, tmp_path):
+    cli = str(tmp_path / "cli.h5")
+    assert run_gesmi("solve", mission_file, "-o", cli).returncode == 0
+    m = gesmi.read_mission(mission_file)
+    s = gesmi.solve(m)
+    py = str(tmp_path / "py.h5")
+    written = gesmi.write_result(s, m, py, "m.h5")
+    assert written[0] == py and len(written) == 4
+    a, a_attrs = datasets(cli)
+    b, b_attrs = datasets(py)
+    assert a.keys() == b.keys()
+    for name in a:
+        assert a[name].dtype == b[name].dtype, name
+        assert a[name].tobytes() == b[name].tobytes(), name  # NaN-safe, bit for bit
+    assert a_attrs.keys() == b_attrs.keys()
+    for key in a_attrs:
+        assert a_attrs[key] == b_attrs[key], key
+
+
+def test_bad_input_raises_a_value_error_with_the_commands_message(tmp_path):
+    missing = str(tmp_path / "none.h5")
+    r = run_gesmi("solve", missing, "-o", str(tmp_path / "r.h5"))
+    assert r.returncode == 2
+    with pytest.raises(gesmi.FormatError) as error:
+        gesmi.read_mission(missing)
+    assert isinstance(error.value, ValueError)
+    assert r.stderr.strip() == "gesmi solve: " + str(error.value)
+    assert "\n" not in str(error.value)
+
+
+def test_the_arrays_are_numpy_views_and_the_model_a_mapping(mission_file):
+    m = gesmi.read_mission(mission_file)
+    assert np.shares_memory(m.time, m.time)  # both views of the same C++ array
+    assert m.time.shape == (len(m),)
+    assert m.model["heading"] == pytest.approx(5.27e-3)
+    assert "sonar_side" in m.model and m.model["sonar_side"] == "starboard"
+    assert len(dict(m.model.items())) == len(m.model)
+    with pytest.raises(gesmi.FormatError):
+        m.model["heading"] = -1.0  # refused, as in a YAML file
+    with pytest.raises(KeyError):
+        m.model["speed_of_sound"]
+    s = gesmi.solve(m)
+    north = s.north
+    assert north.shape == (len(m), 2) and np.shares_memory(north, s.north)
+    assert np.all(north[:, 0] <= north[:, 1])
+    truth = np.stack([m.truth_x, m.truth_y, m.truth_z], axis=1)
+    for axis, tube in enumerate((s.north, s.east, s.down)):
+        assert np.all((tube[:, 0] <= truth[:, axis]) & (truth[:, axis] <= tube[:, 1]))
+    assert s.mines.shape == (m.mine_count, 3, 2)
+
+
+def test_an_operator_loop_adds_a_mark_and_reruns_warm(mission_file, tmp_path):
+    m = gesmi.read_mission(mission_file)
+    first = gesmi.solve(m)
+    assert first.consistent
+    # A missed detection, as the operator would mark it: the simulator's truth knows it.
+    with h5py.File(mission_file, "r") as f:
+        missed = f["/truth/missed_marks"][()]
+    assert len(missed) > 0
+    time, mine, true_range = missed[0]
+    with pytest.raises(gesmi.FormatError):
+        m.add_mark(time=1e9, range=true_range)  # outside the mission: refused, table unchanged
+    rows = m.mark_count()
+    m.add_mark(time=time, range=true_range, mine=int(mine))
+    assert m.mark_count() == rows + 1
+    warm = gesmi.solve(m, warm_from=first)
+    assert warm.report["mode"] == "warm" and warm.consistent
+    cold = gesmi.solve(m)
+    # Constraints only remove solutions: the warm rerun is inside the first solve and
+    # agrees with a cold solve within the solver's tolerance.
+    assert np.all(warm.north[:, 0] >= first.north[:, 0]) and np.all(warm.north[:, 1] <= first.north[:, 1])
+    assert np.max(np.abs(warm.north - cold.north)) < 1e-3
+    # The same rerun from the file the command writes.
+    path = str(tmp_path / "first.h5")
+    gesmi.write_result(first, gesmi.read_mission(mission_file), path)
+    from_file = gesmi.read_warm_start(path, m)
+    assert gesmi.solve(m, warm_from=from_file).report["mode"] == "warm"
+
+
+def test_outliers_diagnosis_kalman_and_localize(tmp_path):
+    m = gesmi.simulate(seed=31, duration=3000, outliers=1)
+    s = gesmi.solve(m)
+    assert not s.consistent
+    assert s.report["explained_by"], s.report["message"]
+    assert s.report["inconsistency"]["kind"] in ("evolution", "fix", "detection")
+    tolerant = gesmi.solve(m, max_outliers=1, trust_gps=True)
+    assert tolerant.consistent and tolerant.report["minimal_outliers"] == 1
+    assert tolerant.report["mode"] == "outliers"
+    conditional = gesmi.solve(m, minimal_outliers=1, trust_gps=True)
+    assert conditional.report["mode"] == "minimal-outliers"
+    k = gesmi.kalman(gesmi.simulate(seed=2, duration=600))
+    assert k.mean.shape[1] == 3 and k.covariance.shape[1:] == (3, 3)
+    assert all(math.isfinite(x) for x in k.mean[:, 0])
+
+
+def test_localize_a_scenario():
+    scenario = os.path.join(os.path.dirname(__file__), "..", "..", "missions", "localization", "triangle_two_hypotheses.yaml")
+    r = gesmi.localize(scenario)
+    assert r["found"]
+    assert r["inner"].shape[1:] == (3, 2)
+    assert len(r["hypotheses"]) == 2  # the scenario's two symmetric poses
+    with pytest.raises(gesmi.FormatError):
+        gesmi.localize(scenario + ".missing")
