@@ -1,7 +1,6 @@
 #include "solver/setinv/bearing_contractor.h"
 
 #include "solver/setinv/relaxed_intersection.h"
-#include "solver/setinv/tight_trig.h"
 
 namespace gesmi {
 
@@ -25,13 +24,13 @@ CtcBearingRelaxed CtcBearingRelaxed::with_outliers(int q) const {
 void CtcBearingRelaxed::contract(Box& box) const {
   // With a wide heading every direction is possible: nothing to gain, skip the work.
   if (box[2].width() > 1.0) return;
-  const Interval c = tight_cos(box[2]), s = tight_sin(box[2]);
+  const Interval c = cos(box[2]), s = sin(box[2]);
   const Interval ray_length = Interval::pos_reals();
   for (std::size_t m = 0; m < measurements_.size(); ++m) {
     const BearingSensor& sensor = sensors_[measurements_[m].sensor];
     const Interval phi = box[2] + Interval(sensor.heading) + Interval(measurements_[m].bearing) +
                          Interval(-sensor.precision, sensor.precision);
-    const Interval cp = tight_cos(phi), sp = tight_sin(phi);
+    const Interval cp = cos(phi), sp = sin(phi);
     const Interval ox = c * sensor.x - s * sensor.y, oy = s * sensor.x + c * sensor.y;
     const Interval sx = box[0] + ox, sy = box[1] + oy;  // the sensor's position
     Interval hx = Interval::empty(), hy = Interval::empty();

@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "solver/setinv/bearing_model.h"
-#include "solver/setinv/tight_trig.h"
 
 namespace gesmi {
 
@@ -41,8 +40,8 @@ void BearingData::evaluate(const Box& box, int depth, std::span<IBool> out, int 
     const BearingSensor& sensor = sensors_[k];
     if (!placed_[k]) {
       if (!trig) {
-        c = tight_cos(p.theta);
-        s = tight_sin(p.theta);
+        c = cos(p.theta);
+        s = sin(p.theta);
         trig = true;
       }
       position_[k] = robot_to_world(p, c, s, sensor.x, sensor.y);

@@ -18,7 +18,7 @@ bool listed(const std::vector<std::size_t>& list, std::size_t i) {
 }  // namespace
 
 std::vector<RangeMeasurement> simulate_ranges(const LocalizationMap& map, const std::vector<RangeSensor>& sensors,
-                                              const Pose<double>& truth, const SimulationOptions& options) {
+                                              const Pose<double>& truth, const MeasurementSimulationOptions& options) {
   std::mt19937 rng(options.seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::vector<RangeMeasurement> out;
@@ -40,7 +40,7 @@ std::vector<RangeMeasurement> simulate_ranges(const LocalizationMap& map, const 
 }
 
 std::vector<BearingMeasurement> simulate_bearings(const LocalizationMap& map, const std::vector<BearingSensor>& sensors,
-                                                  const Pose<double>& truth, const SimulationOptions& options) {
+                                                  const Pose<double>& truth, const MeasurementSimulationOptions& options) {
   std::mt19937 rng(options.seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::vector<BearingMeasurement> out;

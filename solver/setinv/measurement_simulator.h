@@ -13,7 +13,7 @@
 
 namespace gesmi {
 
-struct SimulationOptions {
+struct MeasurementSimulationOptions {
   std::uint32_t seed = 1;
   double error_fraction = 0.9;           // of each bound, in [0, 1)
   double max_range = 10.0;               // sonars report nothing beyond
@@ -23,10 +23,10 @@ struct SimulationOptions {
 
 /// One range per sensor that gets an echo within max_range, in sensor order.
 std::vector<RangeMeasurement> simulate_ranges(const LocalizationMap& map, const std::vector<RangeSensor>& sensors,
-                                              const Pose<double>& truth, const SimulationOptions& options);
+                                              const Pose<double>& truth, const MeasurementSimulationOptions& options);
 
 /// One bearing per (sensor, visible landmark), in sensor then landmark order.
 std::vector<BearingMeasurement> simulate_bearings(const LocalizationMap& map, const std::vector<BearingSensor>& sensors,
-                                                  const Pose<double>& truth, const SimulationOptions& options);
+                                                  const Pose<double>& truth, const MeasurementSimulationOptions& options);
 
 }  // namespace gesmi

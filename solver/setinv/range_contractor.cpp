@@ -4,7 +4,6 @@
 
 #include "solver/setinv/range_model.h"
 #include "solver/setinv/relaxed_intersection.h"
-#include "solver/setinv/tight_trig.h"
 
 namespace gesmi {
 
@@ -27,11 +26,11 @@ CtcRangeRelaxed CtcRangeRelaxed::with_outliers(int q) const {
 }
 
 void CtcRangeRelaxed::contract(Box& box) const {
-  const Interval c = tight_cos(box[2]), s = tight_sin(box[2]);
+  const Interval c = cos(box[2]), s = sin(box[2]);
   for (std::size_t i = 0; i < measurements_.size(); ++i) {
     const RangeSensor& sensor = sensors_[measurements_[i].sensor];
     const Interval axis = box[2] + Interval(sensor.heading) + Interval(-sensor.half_aperture, sensor.half_aperture);
-    const Interval ux = tight_cos(axis), uy = tight_sin(axis);
+    const Interval ux = cos(axis), uy = sin(axis);
     const Interval ox = c * sensor.x - s * sensor.y, oy = s * sensor.x + c * sensor.y;
     // Robot position = m - d u - offset, hulled over the walls that meet the box.
     const Interval bx = -feasible_[i] * ux - ox, by = -feasible_[i] * uy - oy;

@@ -1,7 +1,6 @@
 #include "solver/setinv/range_data.h"
 
 #include "solver/setinv/range_model.h"
-#include "solver/setinv/tight_trig.h"
 
 namespace gesmi {
 
@@ -21,7 +20,7 @@ void RangeData::evaluate(const Box& box, int depth, std::span<IBool> out, int fa
   IBool* status = status_.enter(depth);
   std::uint64_t* candidates = candidates_.enter(depth);
   const Pose<Interval> p{box[0], box[1], box[2]};
-  const Interval c = tight_cos(p.theta), s = tight_sin(p.theta);
+  const Interval c = cos(p.theta), s = sin(p.theta);
   int falses = 0;
   for (std::size_t i = 0; i < measurements_.size(); ++i) falses += status[i].is_false();
   for (std::size_t i = 0; i < measurements_.size(); ++i) {

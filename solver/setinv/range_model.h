@@ -10,11 +10,12 @@
 // cone's edges meeting (ab)), a and b; each candidate counts when it lies on the
 // segment and in the cone, which (4.10) states as sign conditions.
 
+#include <cmath>
 #include <span>
 
+#include "solver/interval/interval.h"
 #include "solver/setinv/geometry2d.h"
 #include "solver/setinv/localization_map.h"
-#include "solver/setinv/tight_trig.h"
 
 namespace gesmi {
 
@@ -87,16 +88,18 @@ struct SensorCone {
 
 template <class T>
 SensorCone<T> sensor_cone(const Pose<T>& p, const T& cos_theta, const T& sin_theta, const RangeSensor& sensor) {
+  using std::cos, std::sin;  // for doubles; intervals find gesmi's by argument lookup
   const T a1 = p.theta + (T(sensor.heading) - T(sensor.half_aperture));
   const T a2 = p.theta + (T(sensor.heading) + T(sensor.half_aperture));
-  return {robot_to_world(p, cos_theta, sin_theta, sensor.x, sensor.y), {tight_cos(a1), tight_sin(a1)}, {tight_cos(a2), tight_sin(a2)}};
+  return {robot_to_world(p, cos_theta, sin_theta, sensor.x, sensor.y), {cos(a1), sin(a1)}, {cos(a2), sin(a2)}};
 }
 
 /// f_i(p) of seed 000 (4.6): the range a sensor reports, min over the walls.
 /// `nearest` (points only) receives the index of the wall that gives it, or -1.
 template <class T>
 T simulated_range(const Pose<T>& p, const RangeSensor& sensor, std::span<const Segment> walls, int* nearest = nullptr) {
-  const T c = tight_cos(p.theta), s = tight_sin(p.theta);
+  using std::cos, std::sin;
+  const T c = cos(p.theta), s = sin(p.theta);
   const SensorCone<T> cone = sensor_cone(p, c, s, sensor);
   T best = far_away<T>();
   if (nearest) *nearest = -1;

@@ -69,7 +69,7 @@ TEST(LocalizationScenarios, NewMeasurementsWithinTheBoundsStillEncloseTheTruth) 
     LocalizationProblem p = io::read_localization_scenario(f);
     if (f.find("outliers") != std::string::npos) continue;  // outlier scenarios: next tests
     for (std::uint32_t seed : {101u, 202u}) {
-      SimulationOptions o;
+      MeasurementSimulationOptions o;
       o.seed = seed;
       o.error_fraction = 0.99;
       p.ranges = simulate_ranges(p.map, p.range_sensors, *p.truth, o);
@@ -100,7 +100,7 @@ TEST(LocalizationScenarios, BeltWithSevenOutliersNeedsExactlySevenAndNamesThem) 
   LocalizationProblem p = io::read_localization_scenario(mission("belt24_outliers.yaml"));
   const std::vector<std::size_t> injected{2, 5, 9, 13, 16, 20, 22};
   for (std::uint32_t seed : {7u, 31u}) {
-    SimulationOptions o;
+    MeasurementSimulationOptions o;
     o.seed = seed;
     o.range_outliers = injected;
     p.ranges = simulate_ranges(p.map, p.range_sensors, *p.truth, o);

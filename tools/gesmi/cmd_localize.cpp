@@ -40,7 +40,7 @@ std::vector<std::size_t> parse_indices(std::string_view option, const std::strin
 
 int simulate(LocalizationProblem problem, const po::variables_map& values) {
   if (!problem.truth) throw UsageError("--simulate needs a 'truth' pose in the scenario");
-  SimulationOptions options;
+  MeasurementSimulationOptions options;
   options.seed = static_cast<std::uint32_t>(parse_integer("--seed", values["seed"].as<std::string>()));
   options.error_fraction = parse_non_negative("--error-fraction", values["error-fraction"].as<std::string>());
   if (options.error_fraction >= 1.0) throw UsageError("--error-fraction must be below 1");

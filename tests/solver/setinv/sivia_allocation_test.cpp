@@ -70,7 +70,7 @@ TEST(SiviaAllocation, RangeDataAndContractorDoNotAllocatePerBox) {
   }
   LocalizationMap map;
   map.walls = walls;
-  SimulationOptions sim;
+  MeasurementSimulationOptions sim;
   sim.range_outliers = {4};
   const auto measurements = simulate_ranges(map, sensors, {4.0, 2.5, 0.3}, sim);
   RangeData data(walls, sensors, measurements);
