@@ -28,10 +28,14 @@ void write_gesmi_txt(const Mission& m, const std::string& source, std::ostream& 
                         " s (a GESMI text log holds one position per sample row)");
     fix_at[k] = static_cast<std::ptrdiff_t>(i);
   }
-  const std::vector<double>* values[8] = {&m.roll, &m.pitch, &m.heading, &m.vx, &m.vy, &m.vz, &m.depth, &m.altitude};
-  const std::vector<double>* given[8] = {&m.half_widths.roll, &m.half_widths.pitch, &m.half_widths.heading,
-                                         &m.half_widths.vx,   &m.half_widths.vy,    &m.half_widths.vz,
-                                         &m.half_widths.depth, &m.half_widths.altitude};
+  // The log's channel order (import_gesmi_txt.h): the readings and bounds of each.
+  const std::vector<double>* values[GesmiColumn::x];
+  const std::vector<double>* given[GesmiColumn::x];
+  for (std::size_t c = 0; c < GesmiColumn::x; ++c) {
+    const NavChannel& channel = nav_channel(gesmi_column_name(c));
+    values[c] = &(m.*channel.readings);
+    given[c] = &(m.half_widths.*channel.half_widths);
+  }
   out << "# GESMI text log written by gesmi export --format gesmi-txt (docs/formats.md)\n"
       << "# SI units, angles in radians; x north and y east in metres about the origin "
       << format_number(m.origin.latitude) << "," << format_number(m.origin.longitude) << " (lat,lon)\n"
@@ -39,7 +43,7 @@ void write_gesmi_txt(const Mission& m, const std::string& source, std::ostream& 
   std::string line;
   for (std::size_t k = 0; k < n; ++k) {
     line = format_number(m.time[k]);
-    for (std::size_t c = 0; c < 8; ++c) {
+    for (std::size_t c = 0; c < GesmiColumn::x; ++c) {
       const double value = (*values[c])[k];
       const double bound = given[c]->empty() ? model_half_width(m.model, c, value) : (*given[c])[k];
       line += ' ' + format_number(value) + ' ' + format_number(bound);

@@ -43,6 +43,8 @@ std::string field_name(std::size_t token) {
 
 }  // namespace
 
+const char* gesmi_column_name(std::size_t column) { return kNames[column]; }
+
 double model_half_width(const SensorModel& model, std::size_t column, double value) {
   switch (column) {
     case GesmiColumn::roll: return model.roll;
@@ -117,11 +119,8 @@ Mission mission_from_gesmi_txt(GesmiTextLog log, const std::string& name, const 
   m.model = model;
   const std::size_t n = log.time.size();
   m.time = std::move(log.time);
-  std::vector<double>* nav[8] = {&m.roll, &m.pitch, &m.heading, &m.vx, &m.vy, &m.vz, &m.depth, &m.altitude};
-  std::vector<double>* bounds[8] = {&m.half_widths.roll, &m.half_widths.pitch, &m.half_widths.heading,
-                                    &m.half_widths.vx,   &m.half_widths.vy,    &m.half_widths.vz,
-                                    &m.half_widths.depth, &m.half_widths.altitude};
-  for (std::size_t c = 0; c < 8; ++c) {
+  for (std::size_t c = 0; c < GesmiColumn::x; ++c) {
+    const NavChannel& channel = nav_channel(kNames[c]);
     std::vector<double>& given = log.half_width[c];
     bool any = false;
     for (const double h : given) any = any || !std::isnan(h);
@@ -129,9 +128,9 @@ Mission mission_from_gesmi_txt(GesmiTextLog log, const std::string& name, const 
       // Samples without a half-width keep the model's bound.
       for (std::size_t k = 0; k < n; ++k)
         if (std::isnan(given[k])) given[k] = model_half_width(model, c, log.value[c][k]);
-      *bounds[c] = std::move(given);
+      m.half_widths.*channel.half_widths = std::move(given);
     }
-    *nav[c] = std::move(log.value[c]);
+    m.*channel.readings = std::move(log.value[c]);
   }
 
   const std::vector<double>& x = log.value[GesmiColumn::x];

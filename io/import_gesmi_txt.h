@@ -42,6 +42,10 @@ struct GesmiTextLog {
   std::vector<std::size_t> line;                                // source line of each row
 };
 
+/// The name of a column ("roll" .. "altitude", "x", "y"): the navigation channel's name
+/// (mission.h) for the first eight.
+const char* gesmi_column_name(std::size_t column);
+
 /// Reads and checks a GESMI text log; FormatError "name:LINE: field: reason".
 GesmiTextLog read_gesmi_txt(std::istream& in, const std::string& name);
 

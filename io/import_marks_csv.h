@@ -11,17 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "io/mark_rules.h"
 #include "solver/mission/mission.h"
 
 namespace gesmi::io {
-
-/// What a mark must satisfy to belong to a mission.
-struct MarkRules {
-  double first_time = 0.0, last_time = 0.0;  // s, the navigation's span
-  double max_range = 0.0;                    // m
-  int mine_count = 0;
-};
-MarkRules mark_rules(const Mission& mission);
 
 struct MarkTable {
   std::vector<double> time, range;

@@ -5,16 +5,17 @@
 namespace gesmi::io {
 
 const std::array<NavHalfWidthColumn, 8>& nav_half_width_columns() {
-  static const std::array<NavHalfWidthColumn, 8> columns = {{
-      {"roll_halfwidth", &NavHalfWidths::roll},
-      {"pitch_halfwidth", &NavHalfWidths::pitch},
-      {"heading_halfwidth", &NavHalfWidths::heading},
-      {"vx_halfwidth", &NavHalfWidths::vx},
-      {"vy_halfwidth", &NavHalfWidths::vy},
-      {"vz_halfwidth", &NavHalfWidths::vz},
-      {"altitude_halfwidth", &NavHalfWidths::altitude},
-      {"depth_halfwidth", &NavHalfWidths::depth},
-  }};
+  // "<channel>_halfwidth", one per navigation channel (mission.h), in its order.
+  static const std::array<std::string, 8> names = [] {
+    std::array<std::string, 8> out;
+    for (std::size_t i = 0; i < 8; ++i) out[i] = std::string(nav_channels()[i].name) + "_halfwidth";
+    return out;
+  }();
+  static const std::array<NavHalfWidthColumn, 8> columns = [] {
+    std::array<NavHalfWidthColumn, 8> out;
+    for (std::size_t i = 0; i < 8; ++i) out[i] = {names[i], nav_channels()[i].half_widths};
+    return out;
+  }();
   return columns;
 }
 

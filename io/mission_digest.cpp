@@ -4,7 +4,6 @@
 #include <span>
 
 #include "io/digest/sha256.h"
-#include "io/sensor_model_attributes.h"
 
 namespace gesmi::io {
 
@@ -13,9 +12,7 @@ std::string navigation_digest(const Mission& m) {
   for (const auto* v : {&m.time, &m.roll, &m.pitch, &m.heading, &m.vx, &m.vy, &m.vz, &m.altitude, &m.depth, &m.gps_time,
                         &m.gps_longitude, &m.gps_latitude, &m.gps_given_north_halfwidth, &m.gps_given_east_halfwidth})
     h.add(*v);
-  for (const auto* v : {&m.half_widths.roll, &m.half_widths.pitch, &m.half_widths.heading, &m.half_widths.vx,
-                        &m.half_widths.vy, &m.half_widths.vz, &m.half_widths.depth, &m.half_widths.altitude})
-    h.add(*v);
+  for (const NavChannel& c : nav_channels()) h.add(m.half_widths.*c.half_widths);
   h.add(m.origin.latitude);
   h.add(m.origin.longitude);
   h.add(static_cast<double>(m.mine_count));
@@ -24,7 +21,7 @@ std::string navigation_digest(const Mission& m) {
 
 std::string bounds_digest(const SensorModel& model) {
   Sha256 h;
-  for (const ModelField& f : model_fields()) {
+  for (const SensorModelField& f : sensor_model_fields()) {
     h.add(f.key);
     h.add(model.*f.member);
   }

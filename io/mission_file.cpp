@@ -8,7 +8,7 @@
 #include "io/geodesy.h"
 #include "io/hdf5/h5_file.h"
 #include "io/hdf5/h5_format.h"
-#include "io/sensor_model_attributes.h"
+#include "io/mark_rules.h"
 #include "io/sonar_side.h"
 #include "solver/network/mission_network.h"
 
@@ -18,15 +18,7 @@ namespace {
 constexpr const char* kFormat = "gesmi-mission";
 constexpr H5FormatVersions kVersions{.current = 1, .oldest = 1, .when_absent = 0};
 
-const char* const kHalfWidthNames[] = {"roll", "pitch", "heading", "vx", "vy", "vz", "depth", "altitude"};
-
-std::vector<double>* half_width(NavHalfWidths& h, int i) {
-  std::vector<double>* all[] = {&h.roll, &h.pitch, &h.heading, &h.vx, &h.vy, &h.vz, &h.depth, &h.altitude};
-  return all[i];
-}
-const std::vector<double>* half_width(const NavHalfWidths& h, int i) {
-  return half_width(const_cast<NavHalfWidths&>(h), i);
-}
+std::string half_width_dataset(const NavChannel& c) { return "/nav/half_widths/" + std::string(c.name); }
 
 std::string row_text(std::size_t row) { return "row " + std::to_string(row); }
 
@@ -63,10 +55,10 @@ void validate_mission(const Mission& m, const std::string& source) {
     expect_size(values->size(), n, source, name);
     expect_finite(*values, source, name, "value");
   }
-  for (int i = 0; i < 8; ++i) {
-    const std::vector<double>& hw = *half_width(m.half_widths, i);
+  for (const NavChannel& c : nav_channels()) {
+    const std::vector<double>& hw = m.half_widths.*c.half_widths;
     if (hw.empty()) continue;
-    const std::string name = std::string("/nav/half_widths/") + kHalfWidthNames[i];
+    const std::string name = half_width_dataset(c);
     expect_size(hw.size(), n, source, name);
     for (std::size_t k = 0; k < n; ++k)
       if (!(hw[k] >= 0.0) || !std::isfinite(hw[k])) bad(source, name, row_text(k) + ": half-width must be finite and >= 0");
@@ -109,22 +101,10 @@ void validate_mission(const Mission& m, const std::string& source) {
   expect_size(m.mark_mine.size(), mk, source, "/marks/mine");
   expect_size(m.mark_range.size(), mk, source, "/marks/range");
   expect_size(m.mark_side.size(), mk, source, "/marks/side");
-  for (std::size_t j = 0; j < mk; ++j) {
-    if (!std::isfinite(m.mark_time[j]) || m.mark_time[j] < m.time.front() || m.mark_time[j] > m.time.back())
-      bad(source, "/marks/time", row_text(j) + ": mark time " + format_number(m.mark_time[j]) +
-                                     " s is outside the mission [" + format_number(m.time.front()) + ", " +
-                                     format_number(m.time.back()) + "] s");
-    if (!std::isfinite(m.mark_range[j]) || m.mark_range[j] < 0.0)
-      bad(source, "/marks/range", row_text(j) + ": range must be a finite number >= 0");
-    if (m.mark_range[j] > m.model.sonar_max_range + m.model.mark_range)
-      bad(source, "/marks/range", row_text(j) + ": range " + format_number(m.mark_range[j]) +
-                                      " m is beyond the sonar's maximum range (" + format_number(m.model.sonar_max_range) + " m)");
-    if (m.mark_side[j] != 1 && m.mark_side[j] != -1)
-      bad(source, "/marks/side", row_text(j) + ": side must be +1 (starboard) or -1 (port), found " + std::to_string(m.mark_side[j]));
-    if (m.mark_mine[j] < -1 || m.mark_mine[j] >= m.mine_count)
-      bad(source, "/marks/mine", row_text(j) + ": mine " + std::to_string(m.mark_mine[j]) + " is not one of the mission's " +
-                                     std::to_string(m.mine_count) + " mines (-1 for unknown)");
-  }
+  const MarkRules rules = mark_rules(m);
+  for (std::size_t j = 0; j < mk; ++j)
+    if (const auto problem = check_mark(rules, m.mark_time[j], m.mark_mine[j], m.mark_range[j], m.mark_side[j]))
+      bad(source, std::string("/marks/") + mark_field_name(problem->field), row_text(j) + ": " + problem->reason);
 
   // Truth.
   if (!m.truth_x.empty() || !m.truth_y.empty() || !m.truth_z.empty()) {
@@ -167,10 +147,11 @@ Mission read_mission(const std::string& path) {
   m.origin.longitude = required_double("/", "origin_longitude");
   const auto mines = f.int_attribute("/", "mine_count");
   if (!mines) throw FormatError(path + ": /: missing attribute mine_count");
-  if (*mines < 0 || *mines > kMaxMines) throw FormatError(path + ": /: mine_count must be between 0 and 64");
+  if (*mines < 0 || *mines > kMaxMines)
+    throw FormatError(path + ": /: mine_count must be between 0 and " + std::to_string(kMaxMines));
   m.mine_count = static_cast<int>(*mines);
   if (!f.has_group("/model")) throw FormatError(path + ": /model: missing group (the sensor model)");
-  for (const ModelField& field : model_fields()) m.model.*field.member = required_double("/model", std::string(field.key));
+  for (const SensorModelField& field : sensor_model_fields()) m.model.*field.member = required_double("/model", std::string(field.key));
   const auto side = f.string_attribute("/model", "sonar_side");
   if (!side) throw FormatError(path + ": /model: missing attribute sonar_side");
   m.model.sonar_side = parse_sonar_side(*side, path + ": /model: sonar_side");
@@ -194,10 +175,8 @@ Mission read_mission(const std::string& path) {
   columns("/nav/velocity", velocity);
   m.altitude = f.read_doubles("/nav/altitude", 1);
   m.depth = f.read_doubles("/nav/depth", 1);
-  for (int i = 0; i < 8; ++i) {
-    const std::string name = std::string("/nav/half_widths/") + kHalfWidthNames[i];
-    if (f.has(name)) *half_width(m.half_widths, i) = f.read_doubles(name, 1);
-  }
+  for (const NavChannel& c : nav_channels())
+    if (const std::string name = half_width_dataset(c); f.has(name)) m.half_widths.*c.half_widths = f.read_doubles(name, 1);
   // Optional groups: absent, or complete.
   const auto require_all = [&](const std::string& group, std::initializer_list<const char*> datasets) {
     if (!f.has_group(group)) return false;
@@ -265,10 +244,8 @@ void write_mission(const Mission& m, const std::string& path) {
     f.write("/nav/velocity", interleave(m.vx, m.vy, m.vz), n, 3, 2);
     f.write("/nav/altitude", m.altitude, n);
     f.write("/nav/depth", m.depth, n);
-    for (int i = 0; i < 8; ++i) {
-      const std::vector<double>& hw = *half_width(m.half_widths, i);
-      if (!hw.empty()) f.write(std::string("/nav/half_widths/") + kHalfWidthNames[i], hw, n);
-    }
+    for (const NavChannel& c : nav_channels())
+      if (const std::vector<double>& hw = m.half_widths.*c.half_widths; !hw.empty()) f.write(half_width_dataset(c), hw, n);
     const std::size_t g = m.gps_time.size();
     f.write("/gps/time", m.gps_time, g);
     std::vector<double> lonlat(2 * g);
@@ -302,7 +279,7 @@ void write_mission(const Mission& m, const std::string& path) {
     f.set_attribute("/", "origin_longitude", m.origin.longitude);
     f.set_attribute("/", "mine_count", static_cast<std::int64_t>(m.mine_count));
     f.create_group("/model");
-    for (const ModelField& field : model_fields()) f.set_attribute("/model", std::string(field.key), m.model.*field.member);
+    for (const SensorModelField& field : sensor_model_fields()) f.set_attribute("/model", std::string(field.key), m.model.*field.member);
     f.set_attribute("/model", "sonar_side", std::string(sonar_side_name(m.model.sonar_side)));
     f.close();
   }

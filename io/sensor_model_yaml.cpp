@@ -5,7 +5,6 @@
 
 #include "io/format_error.h"
 #include "io/message_text.h"
-#include "io/sensor_model_attributes.h"
 #include "io/sonar_side.h"
 #include "io/strict_yaml.h"
 
@@ -18,8 +17,8 @@ void merge_sensor_model_yaml(const std::string& path, SensorModel& model) {
   for (const auto& entry : root) {
     const std::string key = entry.first.Scalar();
     const std::string line = path + ":" + std::to_string(entry.first.Mark().line + 1);
-    const ModelField* field = nullptr;
-    for (const ModelField& f : model_fields())
+    const SensorModelField* field = nullptr;
+    for (const SensorModelField& f : sensor_model_fields())
       if (f.key == key) field = &f;
     if (!field && key != "sonar_side")
       throw FormatError(line + ": unknown key " + quoted_input(key) + " (docs/formats.md lists the sensor model keys)");
@@ -48,7 +47,7 @@ std::string sensor_model_yaml(const SensorModel& model) {
   std::ostringstream out;
   out.precision(17);
   out << "# gesmi sensor error model (docs/formats.md)\n";
-  for (const ModelField& f : model_fields())
+  for (const SensorModelField& f : sensor_model_fields())
     out << f.key << ": " << model.*f.member << "  # " << f.unit << ", " << f.meaning << "\n";
   out << "sonar_side: " << sonar_side_name(model.sonar_side) << "  # starboard, port or both\n";
   return out.str();

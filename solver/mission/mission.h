@@ -8,8 +8,10 @@
 //  - the optional half-width arrays are empty or have the length of `time`;
 //  - truth arrays are empty or complete.
 
+#include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "solver/mission/sensor_model.h"
@@ -27,6 +29,26 @@ struct NavHalfWidths {
   std::vector<double> roll, pitch, heading, vx, vy, vz, depth, altitude;
   bool empty() const { return roll.empty(); }
 };
+
+/// Mine indices are 0..K-1 with K <= kMaxMines (a mark's candidate mines are the
+/// bits of a 64-bit word).
+inline constexpr int kMaxMines = 64;
+
+struct Mission;
+
+/// A navigation channel that may carry per-sample half-widths: its name (the HDF5
+/// dataset /nav/half_widths/<name>, the CSV column <name>_halfwidth), its readings
+/// and its half-widths in a Mission.
+struct NavChannel {
+  std::string_view name;
+  std::vector<double> Mission::*readings;
+  std::vector<double> NavHalfWidths::*half_widths;
+};
+
+/// The eight channels, in the navigation CSV's column order.
+const std::array<NavChannel, 8>& nav_channels();
+/// The channel of that name (one of nav_channels()).
+const NavChannel& nav_channel(std::string_view name);
 
 struct Mission {
   // Navigation, N samples.

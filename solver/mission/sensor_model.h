@@ -4,6 +4,8 @@
 // mission and readable from YAML (docs/formats.md documents each key).
 
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace gesmi {
 
@@ -44,5 +46,17 @@ struct SensorModel {
   /// Empty when every bound is finite and non-negative; otherwise the reason.
   std::string validate() const;
 };
+
+/// One numeric field of the sensor model: its key (the HDF5 /model attribute, the YAML
+/// key, the docs/formats.md row), the member, its unit and meaning.
+struct SensorModelField {
+  std::string_view key;
+  double SensorModel::*member;
+  std::string_view unit, meaning;
+};
+
+/// Every numeric field of SensorModel (the sonar side is apart): the one list that
+/// files, validation, digests and docs derive from.
+const std::vector<SensorModelField>& sensor_model_fields();
 
 }  // namespace gesmi

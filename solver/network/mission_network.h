@@ -38,13 +38,11 @@ struct MissionNetwork {
   std::span<const double> time;       // the mission's time grid (the mission outlives the network)
   std::vector<Anchor> anchors;        // in time order
   std::vector<Detection> detections;  // every detection, in time order
-  int mine_count = 0;                 // K <= kMaxMines
+  int mine_count = 0;                 // K <= kMaxMines (mission.h)
 };
 
-inline constexpr int kMaxMines = 64;
-
 /// Builds the sparse constraints. A mark with mine -1 is a disjunction over the
-/// mines (seed 001 VI-4); mine_count must exceed every mine number and be <= 64.
+/// mines (seed 001 VI-4); mine_count must exceed every mine number and be <= kMaxMines.
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes);
 
 /// The prior domains: increments from the sensors, depth from the barometer,

@@ -139,7 +139,7 @@ std::string SimulationOptions::validate() const {
   if (!(duration > 0.0) || !std::isfinite(duration)) return "duration must be a positive number of seconds";
   if (!(rate > 0.0) || !std::isfinite(rate) || rate > 1000.0) return "rate must be in (0, 1000] Hz";
   if (duration * rate > 2e8) return "duration x rate exceeds 2e8 samples";
-  if (mines < 0 || mines > 64) return "mines must be between 0 and 64";
+  if (mines < 0 || mines > kMaxMines) return "mines must be between 0 and " + std::to_string(kMaxMines);
   if (!(missed >= 0.0 && missed <= 1.0)) return "missed must be a probability in [0, 1]";
   if (!(unassociated >= 0.0 && unassociated <= 1.0)) return "unassociated must be a probability in [0, 1]";
   if (outliers < 0) return "outliers must be >= 0";

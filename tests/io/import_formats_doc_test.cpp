@@ -10,7 +10,6 @@
 
 #include "io/csv_number.h"
 #include "io/import_nav_csv.h"
-#include "io/sensor_model_attributes.h"
 #include "tests/support/paths.h"
 
 namespace gesmi::io {
@@ -33,7 +32,7 @@ std::string cell(std::string_view text) {
 std::string model_key_table() {
   const SensorModel defaults;
   std::string table = "| key | unit | default | meaning |\n| --- | --- | --- | --- |\n";
-  for (const ModelField& f : model_fields())
+  for (const SensorModelField& f : sensor_model_fields())
     table += "| `" + std::string(f.key) + "` | " + std::string(f.unit) + " | " + format_number(defaults.*f.member) +
               " | " + cell(f.meaning) + " |\n";
   table += "| `sonar_side` | – | starboard | `starboard`, `port` or `both` (a string attribute in HDF5) |\n";
@@ -49,7 +48,7 @@ TEST(FormatsDoc, ModelKeyTableIsGeneratedFromTheFieldList) {
   ASSERT_NE(to, std::string::npos);
   const std::string table = doc.substr(from + begin.size(), to - from - begin.size());
   EXPECT_EQ(table, model_key_table()) << "paste this between the markers of docs/formats.md:\n" << model_key_table();
-  for (const ModelField& f : model_fields())
+  for (const SensorModelField& f : sensor_model_fields())
     EXPECT_NE(doc.find("`" + std::string(f.key) + "`"), std::string::npos) << f.key;
 }
 

@@ -30,7 +30,7 @@ GeoOrigin parse_origin(const std::string& text) {
 std::optional<int> parse_mines(const po::variables_map& v) {
   if (!v.count("mines")) return std::nullopt;
   const long long k = parse_integer("--mines", v["mines"].as<std::string>());
-  if (k < 0 || k > 64) throw UsageError("--mines: must be between 0 and 64");
+  if (k < 0 || k > kMaxMines) throw UsageError("--mines: must be between 0 and " + std::to_string(kMaxMines));
   return static_cast<int>(k);
 }
 

@@ -6,6 +6,7 @@
 #include "io/output_set.h"
 #include "io/atomic_output.h"
 #include "io/message_text.h"
+#include "io/mark_rules.h"
 #include "io/mission_file.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
@@ -14,12 +15,6 @@ namespace gesmi::cli {
 namespace {
 
 namespace po = boost::program_options;
-
-std::string seconds(double t) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", t);
-  return buffer;
-}
 
 int list_marks(std::span<const std::string> args) {
   po::options_description options("marks list options");
@@ -62,25 +57,15 @@ int add_mark(std::span<const std::string> args) {
   io::OutputSet outputs(input_files(v, {"mission"}));
   outputs.check(output);
   Mission m = io::read_mission(v["mission"].as<std::string>());
-  if (!std::isfinite(time) || time < m.time.front() || time > m.time.back())
-    throw UsageError("--time: " + io::quoted_input(v["time"].as<std::string>()) + " s is outside the mission [" +
-                     seconds(m.time.front()) + ", " + seconds(m.time.back()) + "] s");
-  if (!std::isfinite(range) || range < 0.0) throw UsageError("--range: must be a number >= 0");
-  if (range > m.model.sonar_max_range)
-    throw UsageError("--range: " + io::quoted_input(v["range"].as<std::string>()) + " m is beyond the sonar's maximum range (" +
-                     seconds(m.model.sonar_max_range) + " m)");
-  int mine = -1;
-  if (mine_text != "?") {
-    const long long i = parse_integer("--mine", mine_text);
-    if (i < 0 || i >= m.mine_count)
-      throw UsageError("--mine: mine " + io::quoted_input(mine_text) + " is not one of the mission's " + std::to_string(m.mine_count) +
-                       " mines (0.." + std::to_string(m.mine_count - 1) + ", or ? when unknown)");
-    mine = static_cast<int>(i);
-  }
+  const long long mine = mine_text == "?" ? -1 : parse_integer("--mine", mine_text);
+  const int side_sign = side == "starboard" ? 1 : -1;
+  // The rules of the mission file and of `gesmi import marks` (io/mark_rules.h).
+  if (const auto problem = io::check_mark(io::mark_rules(m), time, mine, range, side_sign))
+    throw UsageError("--" + std::string(io::mark_field_name(problem->field)) + ": " + problem->reason);
   m.mark_time.push_back(time);
-  m.mark_mine.push_back(mine);
+  m.mark_mine.push_back(static_cast<std::int32_t>(mine));
   m.mark_range.push_back(range);
-  m.mark_side.push_back(side == "starboard" ? 1 : -1);
+  m.mark_side.push_back(side_sign);
   // An operator's mark on a simulated mission: its truth is unknown (-1 = not a
   // simulated detection), and it is not an injected outlier.
   if (!m.truth_marks_outlier.empty()) m.truth_marks_outlier.push_back(0);

@@ -59,7 +59,7 @@ void apply_mine_count(const po::variables_map& v, Mission& mission) {
   if (k <= largest)
     throw UsageError("--mines: " + std::to_string(k) + " is not more than the largest mine number in the mark table (" +
                      std::to_string(largest) + ")");
-  if (k > kMaxMines) throw UsageError("--mines: at most 64 mines");
+  if (k > kMaxMines) throw UsageError("--mines: at most " + std::to_string(kMaxMines) + " mines");
   mission.mine_count = static_cast<int>(k);
 }
 

@@ -6,7 +6,6 @@
 #include "io/format_error.h"
 #include "io/geodesy.h"
 #include "io/mission_file.h"
-#include "io/sensor_model_attributes.h"
 #include "io/sonar_side.h"
 #include "solver/sim/simulator.h"
 #include "tools/python/bindings.h"
@@ -21,7 +20,7 @@ struct ModelView {
 
   py::object get(const std::string& key) const {
     if (key == "sonar_side") return py::str(std::string(io::sonar_side_name(model->sonar_side)));
-    for (const io::ModelField& f : io::model_fields())
+    for (const SensorModelField& f : sensor_model_fields())
       if (f.key == key) return py::float_(model->*f.member);
     throw py::key_error(key);
   }
@@ -30,7 +29,7 @@ struct ModelView {
       model->sonar_side = io::parse_sonar_side(py::cast<std::string>(value), "sonar_side");
       return;
     }
-    for (const io::ModelField& f : io::model_fields())
+    for (const SensorModelField& f : sensor_model_fields())
       if (f.key == key) {
         SensorModel updated = *model;
         updated.*f.member = py::cast<double>(value);
@@ -42,7 +41,7 @@ struct ModelView {
   }
   std::vector<std::string> keys() const {
     std::vector<std::string> k;
-    for (const io::ModelField& f : io::model_fields()) k.emplace_back(f.key);
+    for (const SensorModelField& f : sensor_model_fields()) k.emplace_back(f.key);
     k.emplace_back("sonar_side");
     return k;
   }
