@@ -25,7 +25,7 @@ const Anchor* anchor_of(const MissionNetwork& net, std::size_t row) {
 
 std::string detection_head(const Detection& det, const std::string& mine) {
   return "detection " + std::to_string(det.mark) + " at t = " + format_time(det.time) + " (mine " + mine + ", range " +
-         fixed(det.measured_range, 2) + " m, " + (det.side > 0 ? "starboard" : "port") + ")";
+         fixed(det.measured_range, 2) + " m, " + (det.plane.side == SonarSide::starboard ? "starboard" : "port") + ")";
 }
 
 // A constraint as the evolution message names it, with its time.
@@ -69,7 +69,7 @@ std::string detection(const Inconsistency& inc, const MissionNetwork& net) {
   if (!distance.intersects(det->range))
     return head + ": range " + format_interval(det->range) + " m cannot be reached, the distance from the tube to mine " +
            std::to_string(inc.mine) + " is within " + format_interval(distance) + " m";
-  return head + ": mine " + std::to_string(inc.mine) + " cannot lie in the " + (det->side > 0 ? "starboard" : "port") +
+  return head + ": mine " + std::to_string(inc.mine) + " cannot lie in the " + (det->plane.side == SonarSide::starboard ? "starboard" : "port") +
          " sonar plane below the robot at that range (tube north " + format_interval(inc.tube[0]) + ", east " +
          format_interval(inc.tube[1]) + "; mine box north " + format_interval(inc.mine_box[0]) + ", east " +
          format_interval(inc.mine_box[1]) + ")";

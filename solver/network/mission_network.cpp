@@ -60,18 +60,19 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
     d.time = mission.mark_time[j];
     d.mine = mission.mark_mine[j];
     d.measured_range = mission.mark_range[j];
-    d.side = mission.mark_side[j];
     d.at = TimeLocation::locate(mission.time, d.time, boxes);
+    SonarPlane& plane = d.plane;
+    plane.side = mission.mark_side[j] > 0 ? SonarSide::starboard : SonarSide::port;
     if (d.at.on_grid) {
-      d.attitude = make_attitude(boxes.roll(d.at.k), boxes.pitch(d.at.k), boxes.heading(d.at.k));
-      d.altitude = boxes.altitude(d.at.k);
+      plane.attitude = make_attitude(boxes.roll(d.at.k), boxes.pitch(d.at.k), boxes.heading(d.at.k));
+      plane.altitude = boxes.altitude(d.at.k);
     } else {
-      d.attitude = boxes.step_attitude(d.at.k);
-      d.altitude = boxes.step_altitude(d.at.k);
+      plane.attitude = boxes.step_attitude(d.at.k);
+      plane.altitude = boxes.step_altitude(d.at.k);
     }
+    plane.along_tolerance = model.along_track_tolerance;
+    plane.depth_band = model.mine_depth_band;
     d.range = intersect(Interval::around(d.measured_range, model.mark_range), Interval::pos_reals());
-    d.along_tolerance = model.along_track_tolerance;
-    d.depth_band = model.mine_depth_band;
     net.detections.push_back(d);
   }
   std::stable_sort(net.detections.begin(), net.detections.end(),

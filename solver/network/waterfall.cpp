@@ -2,18 +2,17 @@
 
 #include <limits>
 
-#include "solver/network/detection.h"
+#include "solver/network/sonar_plane.h"
 #include "solver/network/sensor_boxes.h"
 
 namespace gesmi {
 namespace {
 
 // Range interval for one side, or empty.
-Interval feasible_ranges(Detection det, const Vec3I& position, const Vec3I& mine, int side) {
-  det.side = side;
+Interval feasible_ranges(SonarPlane plane, const Vec3I& position, const Vec3I& mine, Interval range, SonarSide side) {
+  plane.side = side;
   Vec3I q = position, m = mine;
-  Interval range = det.range;
-  if (!det.contract(q, m, range)) return Interval::empty();
+  if (!plane.contract(q, m, range)) return Interval::empty();
   return range;
 }
 
@@ -30,21 +29,21 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
   const Interval swath(0.0, model.sonar_max_range);
   for (std::size_t k = 0; k < w.steps; ++k) {
     const Vec3I p = domains.position(k);
-    Detection det;
-    det.attitude = make_attitude(boxes.roll(k), boxes.pitch(k), boxes.heading(k));
-    det.altitude = boxes.altitude(k);
-    det.along_tolerance = model.along_track_tolerance;
-    det.depth_band = model.mine_depth_band;
+    SonarPlane plane;
+    plane.attitude = make_attitude(boxes.roll(k), boxes.pitch(k), boxes.heading(k));
+    plane.altitude = boxes.altitude(k);
+    plane.along_tolerance = model.along_track_tolerance;
+    plane.depth_band = model.mine_depth_band;
     for (std::size_t i = 0; i < w.mines; ++i) {
       const Vec3I& m = domains.mines[i];
       // Cheap rejection: the boxes are farther apart than the sonar reaches.
       const Interval distance = box_distance(p, m);
       if (!distance.intersects(swath)) continue;
-      det.range = intersect(distance, swath);
+      const Interval reach = intersect(distance, swath);
       Interval ranges = Interval::empty();
-      for (const int side : {1, -1}) {
-        if (model.sonar_side != SonarSide::both && static_cast<int>(model.sonar_side) != side) continue;
-        ranges = hull(ranges, feasible_ranges(det, p, m, side));
+      for (const SonarSide side : {SonarSide::starboard, SonarSide::port}) {
+        if (model.sonar_side != SonarSide::both && model.sonar_side != side) continue;
+        ranges = hull(ranges, feasible_ranges(plane, p, m, reach, side));
       }
       if (ranges.is_empty()) continue;
       w.lower[k * w.mines + i] = ranges.lo();

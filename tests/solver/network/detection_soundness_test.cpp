@@ -48,15 +48,15 @@ TEST(DetectionSoundness, TheTrueConfigurationSurvivesContraction) {
   for (int n = 0; n < 30000; ++n) {
     const test::SonarConfiguration c = test::random_sonar_configuration(rng, model, model.sonar_max_range);
     Detection det;
-    det.side = c.side;
-    det.along_tolerance = model.along_track_tolerance;
-    det.depth_band = model.mine_depth_band;
-    det.attitude = make_attitude(box_around(rng, c.roll, kAngleWidths, 6), box_around(rng, c.pitch, kAngleWidths, 6),
+    det.plane.side = c.side > 0 ? SonarSide::starboard : SonarSide::port;
+    det.plane.along_tolerance = model.along_track_tolerance;
+    det.plane.depth_band = model.mine_depth_band;
+    det.plane.attitude = make_attitude(box_around(rng, c.roll, kAngleWidths, 6), box_around(rng, c.pitch, kAngleWidths, 6),
                                  box_around(rng, c.heading, kAngleWidths, 6));
     const double a_lo = static_cast<double>(c.altitude), a_hi = a_lo < c.altitude ? next_up(a_lo) : a_lo;
     const Interval a_point(a_lo > c.altitude ? next_down(a_lo) : a_lo, a_hi);  // the doubles around the true altitude
     const double aw = kAltitudeWidths[rng() % 5];
-    det.altitude = Interval(sub_down(a_point.lo(), aw * 0.3), add_up(a_point.hi(), aw * 0.7));
+    det.plane.altitude = Interval(sub_down(a_point.lo(), aw * 0.3), add_up(a_point.hi(), aw * 0.7));
     det.range = intersect(Interval::around(c.measured_range, model.mark_range), Interval::pos_reals());
     Vec3I q, m;
     for (int i = 0; i < 3; ++i) {
@@ -66,7 +66,7 @@ TEST(DetectionSoundness, TheTrueConfigurationSurvivesContraction) {
     const Vec3I q0 = q, m0 = m;
     Interval r = det.range;
     ++cases;
-    const bool ok = det.contract(q, m, r);
+    const bool ok = det.plane.contract(q, m, r);
     bool kept = ok && r.lo() <= c.range && c.range <= r.hi();
     for (int i = 0; kept && i < 3; ++i) kept = q[i].contains(c.p[i]) && m[i].contains(c.m[i]);
     if (!kept && failures++ == 0) {

@@ -1,4 +1,4 @@
-#include "solver/network/detection.h"
+#include "solver/network/sonar_plane.h"
 
 #include "solver/ctc/ctc_distance.h"
 
@@ -8,8 +8,8 @@ Interval box_distance(const Vec3I& a, const Vec3I& b) {
   return sqrt(sqr(a[0] - b[0]) + sqr(a[1] - b[1]) + sqr(a[2] - b[2]));
 }
 
-Vec3I Detection::body_prior() const {
-  const Interval across = side > 0 ? Interval::neg_reals() : Interval::pos_reals();
+Vec3I SonarPlane::body_prior() const {
+  const Interval across = side == SonarSide::starboard ? Interval::neg_reals() : Interval::pos_reals();
   return Vec3I(Interval(-along_tolerance, along_tolerance), across, Interval::neg_reals());
 }
 
@@ -30,7 +30,7 @@ double largest_change(const Vec3I& before, const Vec3I& after) {
 
 }  // namespace
 
-bool Detection::contract(Vec3I& q, Vec3I& m, Interval& r) const {
+bool SonarPlane::contract(Vec3I& q, Vec3I& m, Interval& r) const {
   const Vec3I prior = body_prior();
   const Interval vertical = -(altitude + Interval(-depth_band, depth_band));  // e.z = p_z - m_z
   Interval zero_x(0.0), zero_y(0.0), zero_z(0.0);

@@ -1,0 +1,37 @@
+#pragma once
+// The side-scan sonar's geometry at one instant (seed 001, section IV-D), with
+// e = p - m the vector from the mine to the robot and e_b = R^T e its coordinates in
+// the robot frame (along, across, down):
+//   |e_b.x| <= along-track tolerance   (the mine is in the sonar plane)
+//   e_b.y <= 0 starboard, >= 0 port     (the side; seed 001 eq. 8)
+//   e_b.z <= 0                          (the mine is below the robot)
+//   ||e|| = r                           (the slant range)
+//   e.z = -(a + s), |s| <= band         (m_z = a + p_z + s, eq. 10)
+// contracted forward-backward in both frames (docs/model.md). A mark (detection.h)
+// is this plane plus a measured range and a mine; the waterfall (waterfall.h) asks
+// the plane alone at which ranges a mine can appear.
+
+#include "solver/interval/box.h"
+#include "solver/mission/sensor_model.h"
+#include "solver/model/euler.h"
+
+namespace gesmi {
+
+struct SonarPlane {
+  Attitude<Interval> attitude;  // of the robot at that instant
+  Interval altitude;            // above the floor at that instant
+  double along_tolerance = 0.0;
+  double depth_band = 0.0;
+  SonarSide side = SonarSide::starboard;  // port or starboard (not both)
+
+  /// Contracts the robot's position q, the mine box m and the slant range r; false
+  /// when they cannot satisfy the geometry (all three are then left empty).
+  bool contract(Vec3I& q, Vec3I& m, Interval& r) const;
+  /// The robot-frame box of e allowed before any data.
+  Vec3I body_prior() const;
+};
+
+/// Distance between the points of two boxes, as an interval.
+Interval box_distance(const Vec3I& a, const Vec3I& b);
+
+}  // namespace gesmi
