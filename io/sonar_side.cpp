@@ -1,7 +1,7 @@
 #include "io/sonar_side.h"
 
 #include "io/format_error.h"
-#include "io/message_text.h"
+#include "io/text/message_text.h"
 
 namespace gesmi::io {
 

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <cstdio>
 
-#include "io/atomic_output.h"
+#include "io/output/atomic_output.h"
 #include "io/format_error.h"
 
 namespace gesmi::io {

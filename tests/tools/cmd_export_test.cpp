@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/mission_file.h"
+#include "io/files/mission_file.h"
 #include "tests/support/run_command.h"
 
 namespace gesmi::test {

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/mission_file.h"
+#include "io/files/mission_file.h"
 #include "tests/support/paths.h"
 #include "tests/support/run_command.h"
 

@@ -11,8 +11,8 @@
 #include <map>
 #include <sstream>
 
-#include "io/mission_file.h"
-#include "io/result_file.h"
+#include "io/files/mission_file.h"
+#include "io/files/result_file.h"
 #include "tests/support/run_command.h"
 
 namespace gesmi::test {

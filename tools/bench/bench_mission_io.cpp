@@ -20,7 +20,7 @@
 #include <string>
 
 #include "io/geodesy.h"
-#include "io/mission_file.h"
+#include "io/files/mission_file.h"
 #include "solver/sim/simulator.h"
 
 namespace {

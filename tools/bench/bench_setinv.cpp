@@ -10,7 +10,7 @@
 #include <numbers>
 #include <string>
 
-#include "io/localization_scenario.h"
+#include "io/localization/localization_scenario.h"
 #include "solver/setinv/invert.h"
 #include "solver/setinv/localization_problem.h"
 

@@ -6,7 +6,7 @@
 #include <iostream>
 #include <vector>
 
-#include "io/message_text.h"
+#include "io/text/message_text.h"
 
 namespace po = boost::program_options;
 

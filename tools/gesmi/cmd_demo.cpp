@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "io/output_set.h"
-#include "io/result_file.h"
+#include "io/output/output_set.h"
+#include "io/files/result_file.h"
 #include "tools/gesmi/cli_args.h"
 
 namespace gesmi::cli {

@@ -3,12 +3,12 @@
 
 #include <cstdio>
 
-#include "io/atomic_output.h"
-#include "io/export_csv.h"
-#include "io/export_gesmi_txt.h"
-#include "io/message_text.h"
-#include "io/mission_file.h"
-#include "io/output_set.h"
+#include "io/output/atomic_output.h"
+#include "io/exports/export_csv.h"
+#include "io/exports/export_gesmi_txt.h"
+#include "io/text/message_text.h"
+#include "io/files/mission_file.h"
+#include "io/output/output_set.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/input_files.h"
 

@@ -3,11 +3,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "io/output_set.h"
-#include "io/atomic_output.h"
-#include "io/import_mission.h"
-#include "io/message_text.h"
-#include "io/mission_file.h"
+#include "io/output/output_set.h"
+#include "io/output/atomic_output.h"
+#include "io/imports/import_mission.h"
+#include "io/text/message_text.h"
+#include "io/files/mission_file.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "io/output_set.h"
-#include "io/atomic_output.h"
-#include "io/kalman_result.h"
-#include "io/mission_file.h"
-#include "io/sensor_model_yaml.h"
+#include "io/output/output_set.h"
+#include "io/output/atomic_output.h"
+#include "io/files/kalman_result.h"
+#include "io/files/mission_file.h"
+#include "io/files/sensor_model_yaml.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/json_writer.h"

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "io/output_set.h"
-#include "io/localization_output.h"
-#include "io/localization_scenario.h"
+#include "io/output/output_set.h"
+#include "io/localization/localization_output.h"
+#include "io/localization/localization_scenario.h"
 #include "solver/setinv/measurement_simulator.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"

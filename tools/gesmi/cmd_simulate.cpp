@@ -2,12 +2,12 @@
 
 #include <cstdio>
 
-#include "io/output_set.h"
-#include "io/atomic_output.h"
+#include "io/output/output_set.h"
+#include "io/output/atomic_output.h"
 #include "io/geodesy.h"
-#include "io/message_text.h"
-#include "io/mission_file.h"
-#include "io/sensor_model_yaml.h"
+#include "io/text/message_text.h"
+#include "io/files/mission_file.h"
+#include "io/files/sensor_model_yaml.h"
 #include "solver/sim/simulator.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"

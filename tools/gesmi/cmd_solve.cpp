@@ -7,12 +7,12 @@
 #include <filesystem>
 
 #include "io/io_version.h"
-#include "io/mission_digest.h"
-#include "io/mission_file.h"
-#include "io/output_set.h"
-#include "io/sensor_model_yaml.h"
-#include "io/solve_outputs.h"
-#include "io/warm_start_file.h"
+#include "io/files/mission_digest.h"
+#include "io/files/mission_file.h"
+#include "io/output/output_set.h"
+#include "io/files/sensor_model_yaml.h"
+#include "io/files/solve_outputs.h"
+#include "io/files/warm_start_file.h"
 #include "solver/solve/solve_mission.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/input_files.h"

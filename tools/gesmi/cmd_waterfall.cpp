@@ -3,10 +3,10 @@
 
 #include <cstdio>
 
-#include "io/output_set.h"
-#include "io/atomic_output.h"
+#include "io/output/output_set.h"
+#include "io/output/atomic_output.h"
 #include "io/plot/plot_waterfall.h"
-#include "io/result_file.h"
+#include "io/files/result_file.h"
 #include "solver/network/look_again.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "io/format_error.h"
-#include "io/message_text.h"
+#include "io/text/message_text.h"
 #include "tools/gesmi/command.h"
 
 namespace gesmi::cli {
@@ -35,7 +35,7 @@ void print_help() {
 }
 
 // Every message leaves through here: one line whatever it holds (control characters
-// and bytes that are not UTF-8 from paths or input are escaped; io/message_text.h).
+// and bytes that are not UTF-8 from paths or input are escaped; io/text/message_text.h).
 void report(const std::string& who, const std::string& message) {
   std::fprintf(stderr, "%s: %s\n", who.c_str(), gesmi::io::one_line(message).c_str());
 }

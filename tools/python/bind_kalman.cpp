@@ -4,7 +4,7 @@
 
 #include "io/format_error.h"
 #include "io/geodesy.h"
-#include "io/mission_file.h"
+#include "io/files/mission_file.h"
 #include "solver/kalman/kalman_smoother.h"
 #include "tools/python/bindings.h"
 

@@ -2,7 +2,7 @@
 
 #include <pybind11/stl.h>
 
-#include "io/localization_scenario.h"
+#include "io/localization/localization_scenario.h"
 #include "solver/setinv/localization_problem.h"
 #include "tools/python/bindings.h"
 

@@ -5,7 +5,7 @@
 
 #include "io/format_error.h"
 #include "io/geodesy.h"
-#include "io/mission_file.h"
+#include "io/files/mission_file.h"
 #include "io/sonar_side.h"
 #include "solver/sim/simulator.h"
 #include "tools/python/bindings.h"

@@ -1,0 +1,289 @@
+#include "io/files/mission_file.h"
+
+#include <cmath>
+
+#include "io/output/atomic_output.h"
+#include "io/imports/csv_number.h"
+#include "io/format_error.h"
+#include "io/geodesy.h"
+#include "io/hdf5/h5_file.h"
+#include "io/hdf5/h5_format.h"
+#include "io/imports/mark_rules.h"
+#include "io/sonar_side.h"
+#include "solver/network/mission_network.h"
+
+namespace gesmi::io {
+namespace {
+
+constexpr const char* kFormat = "gesmi-mission";
+constexpr H5FormatVersions kVersions{.current = 1, .oldest = 1, .when_absent = 0};
+
+std::string half_width_dataset(const NavChannel& c) { return "/nav/half_widths/" + std::string(c.name); }
+
+std::string row_text(std::size_t row) { return "row " + std::to_string(row); }
+
+[[noreturn]] void bad(const std::string& source, const std::string& dataset, const std::string& what) {
+  throw FormatError(source + ": " + dataset + ": " + what);
+}
+
+void expect_finite(const std::vector<double>& v, const std::string& source, const std::string& dataset,
+                   const char* field) {
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i])) bad(source, dataset, row_text(i) + ": " + field + " is " + (std::isnan(v[i]) ? "NaN" : "infinite"));
+}
+
+void expect_size(std::size_t size, std::size_t expected, const std::string& source, const std::string& dataset) {
+  if (size != expected)
+    bad(source, dataset, "expected " + std::to_string(expected) + " rows, found " + std::to_string(size));
+}
+
+}  // namespace
+
+void validate_mission(const Mission& m, const std::string& source) {
+  const std::size_t n = m.size();
+  if (n < 2) bad(source, "/nav/time", "a mission needs at least 2 samples, found " + std::to_string(n));
+  expect_finite(m.time, source, "/nav/time", "time");
+  for (std::size_t k = 1; k < n; ++k)
+    if (!(m.time[k] > m.time[k - 1]))
+      bad(source, "/nav/time", row_text(k) + ": time does not increase (" + format_number(m.time[k]) + " after " +
+                                   format_number(m.time[k - 1]) + ")");
+  const std::pair<const std::vector<double>*, const char*> nav[] = {
+      {&m.roll, "/nav/attitude roll"}, {&m.pitch, "/nav/attitude pitch"}, {&m.heading, "/nav/attitude heading"},
+      {&m.vx, "/nav/velocity x"},      {&m.vy, "/nav/velocity y"},        {&m.vz, "/nav/velocity z"},
+      {&m.altitude, "/nav/altitude"},  {&m.depth, "/nav/depth"}};
+  for (const auto& [values, name] : nav) {
+    expect_size(values->size(), n, source, name);
+    expect_finite(*values, source, name, "value");
+  }
+  for (const NavChannel& c : nav_channels()) {
+    const std::vector<double>& hw = m.half_widths.*c.half_widths;
+    if (hw.empty()) continue;
+    const std::string name = half_width_dataset(c);
+    expect_size(hw.size(), n, source, name);
+    for (std::size_t k = 0; k < n; ++k)
+      if (!(hw[k] >= 0.0) || !std::isfinite(hw[k])) bad(source, name, row_text(k) + ": half-width must be finite and >= 0");
+  }
+  const std::string model_error = m.model.validate();
+  if (!model_error.empty()) bad(source, "/model", model_error);
+  if (m.mine_count < 0 || m.mine_count > kMaxMines)
+    bad(source, "/", "mine_count must be between 0 and " + std::to_string(kMaxMines));
+  if (!std::isfinite(m.origin.latitude) || std::fabs(m.origin.latitude) > 89.0 || !std::isfinite(m.origin.longitude) ||
+      std::fabs(m.origin.longitude) > 180.0)
+    bad(source, "/", "origin_latitude/origin_longitude out of range");
+
+  // GPS.
+  const std::size_t g = m.gps_time.size();
+  expect_size(m.gps_latitude.size(), g, source, "/gps/lonlat");
+  expect_size(m.gps_longitude.size(), g, source, "/gps/lonlat");
+  expect_finite(m.gps_time, source, "/gps/time", "time");
+  for (std::size_t i = 0; i < g; ++i) {
+    if (i > 0 && !(m.gps_time[i] > m.gps_time[i - 1]))
+      bad(source, "/gps/time", row_text(i) + ": fix times must increase (" + format_number(m.gps_time[i]) + " after " +
+                                   format_number(m.gps_time[i - 1]) + ")");
+    if (m.gps_time[i] < m.time.front() || m.gps_time[i] > m.time.back())
+      bad(source, "/gps/time", row_text(i) + ": fix time " + format_number(m.gps_time[i]) + " s is outside the mission");
+    if (!std::isfinite(m.gps_latitude[i]) || std::fabs(m.gps_latitude[i]) > 90.0)
+      bad(source, "/gps/lonlat", row_text(i) + ": latitude must be in [-90, 90]");
+    if (!std::isfinite(m.gps_longitude[i]) || std::fabs(m.gps_longitude[i]) > 180.0)
+      bad(source, "/gps/lonlat", row_text(i) + ": longitude must be in [-180, 180]");
+  }
+  if (!m.gps_given_north_halfwidth.empty() || !m.gps_given_east_halfwidth.empty()) {
+    expect_size(m.gps_given_north_halfwidth.size(), g, source, "/gps/halfwidth north");
+    expect_size(m.gps_given_east_halfwidth.size(), g, source, "/gps/halfwidth east");
+    for (std::size_t i = 0; i < g; ++i)
+      if (!(m.gps_given_north_halfwidth[i] >= 0.0) || !std::isfinite(m.gps_given_north_halfwidth[i]) ||
+          !(m.gps_given_east_halfwidth[i] >= 0.0) || !std::isfinite(m.gps_given_east_halfwidth[i]))
+        bad(source, "/gps/halfwidth", row_text(i) + ": half-width must be finite and >= 0");
+  }
+
+  // Marks.
+  const std::size_t mk = m.mark_time.size();
+  expect_size(m.mark_mine.size(), mk, source, "/marks/mine");
+  expect_size(m.mark_range.size(), mk, source, "/marks/range");
+  expect_size(m.mark_side.size(), mk, source, "/marks/side");
+  const MarkRules rules = mark_rules(m);
+  for (std::size_t j = 0; j < mk; ++j)
+    if (const auto problem = check_mark(rules, m.mark_time[j], m.mark_mine[j], m.mark_range[j], m.mark_side[j]))
+      bad(source, std::string("/marks/") + mark_field_name(problem->field), row_text(j) + ": " + problem->reason);
+
+  // Truth.
+  if (!m.truth_x.empty() || !m.truth_y.empty() || !m.truth_z.empty()) {
+    expect_size(m.truth_x.size(), n, source, "/truth/position");
+    expect_size(m.truth_y.size(), n, source, "/truth/position");
+    expect_size(m.truth_z.size(), n, source, "/truth/position");
+    for (const auto* axis : {&m.truth_x, &m.truth_y, &m.truth_z}) expect_finite(*axis, source, "/truth/position", "position");
+  }
+  if (!m.truth_mines.empty()) {
+    expect_size(m.truth_mines.size(), 3 * static_cast<std::size_t>(m.mine_count), source, "/truth/mines (K x 3)");
+    expect_finite(m.truth_mines, source, "/truth/mines", "position");
+  }
+  if (m.truth_missed_marks.size() % 3 != 0) bad(source, "/truth/missed_marks", "expected X x 3 values");
+  expect_finite(m.truth_missed_marks, source, "/truth/missed_marks", "value");
+  const auto expect_flags = [&](const std::vector<std::int32_t>& flags, std::size_t rows, const char* dataset) {
+    expect_size(flags.size(), rows, source, dataset);
+    for (std::size_t i = 0; i < flags.size(); ++i)
+      if (flags[i] != 0 && flags[i] != 1) bad(source, dataset, row_text(i) + ": expected 0 or 1");
+  };
+  if (!m.truth_marks_outlier.empty()) expect_flags(m.truth_marks_outlier, mk, "/truth/marks_outlier");
+  if (!m.truth_gps_outlier.empty()) expect_flags(m.truth_gps_outlier, g, "/truth/gps_outlier");
+  if (!m.truth_marks_mine.empty()) {
+    expect_size(m.truth_marks_mine.size(), mk, source, "/truth/marks_mine");
+    for (std::size_t j = 0; j < mk; ++j)
+      if (m.truth_marks_mine[j] < -1 || m.truth_marks_mine[j] >= m.mine_count)
+        bad(source, "/truth/marks_mine", row_text(j) + ": not one of the mission's mines");
+  }
+}
+
+Mission read_mission(const std::string& path) {
+  const H5File f = H5File::open_read(path);
+  Mission m;
+  check_format(f, kFormat, "gesmi mission", kVersions);
+  const auto required_double = [&](const std::string& object, const std::string& name) {
+    const auto v = f.double_attribute(object, name);
+    if (!v) throw FormatError(path + ": " + object + ": missing attribute " + name);
+    return *v;
+  };
+  m.origin.latitude = required_double("/", "origin_latitude");
+  m.origin.longitude = required_double("/", "origin_longitude");
+  const auto mines = f.int_attribute("/", "mine_count");
+  if (!mines) throw FormatError(path + ": /: missing attribute mine_count");
+  if (*mines < 0 || *mines > kMaxMines)
+    throw FormatError(path + ": /: mine_count must be between 0 and " + std::to_string(kMaxMines));
+  m.mine_count = static_cast<int>(*mines);
+  if (!f.has_group("/model")) throw FormatError(path + ": /model: missing group (the sensor model)");
+  for (const SensorModelField& field : sensor_model_fields()) m.model.*field.member = required_double("/model", std::string(field.key));
+  const auto side = f.string_attribute("/model", "sonar_side");
+  if (!side) throw FormatError(path + ": /model: missing attribute sonar_side");
+  m.model.sonar_side = parse_sonar_side(*side, path + ": /model: sonar_side");
+
+  // Navigation, read column by column into the flat arrays (one copy of the data).
+  m.time = f.read_doubles("/nav/time", 1);
+  const std::size_t n = m.time.size();
+  const auto columns = [&](const std::string& dataset, std::vector<double>* out[3]) {
+    const H5Shape s = f.shape(dataset);
+    if (s.rank != 2 || s.columns != 3 || s.rows != n)
+      throw FormatError(path + ": " + dataset + ": expected " + std::to_string(n) + " x 3, found " + std::to_string(s.rows) +
+                        " x " + std::to_string(s.columns));
+    for (std::size_t c = 0; c < 3; ++c) {
+      out[c]->resize(n);
+      f.read_column_into(dataset, c, *out[c]);
+    }
+  };
+  std::vector<double>* attitude[3] = {&m.roll, &m.pitch, &m.heading};
+  std::vector<double>* velocity[3] = {&m.vx, &m.vy, &m.vz};
+  columns("/nav/attitude", attitude);
+  columns("/nav/velocity", velocity);
+  m.altitude = f.read_doubles("/nav/altitude", 1);
+  m.depth = f.read_doubles("/nav/depth", 1);
+  for (const NavChannel& c : nav_channels())
+    if (const std::string name = half_width_dataset(c); f.has(name)) m.half_widths.*c.half_widths = f.read_doubles(name, 1);
+  // Optional groups: absent, or complete.
+  const auto require_all = [&](const std::string& group, std::initializer_list<const char*> datasets) {
+    if (!f.has_group(group)) return false;
+    for (const char* name : datasets)
+      if (!f.has(group + "/" + name))
+        throw FormatError(path + ": " + group + "/" + name + ": missing dataset (the " + group + " group needs it)");
+    return true;
+  };
+  if (require_all("/gps", {"time", "lonlat"})) {
+    m.gps_time = f.read_doubles("/gps/time", 1);
+    const H5Shape s = f.shape("/gps/lonlat");
+    if (s.rank != 2 || s.columns != 2 || s.rows != m.gps_time.size())
+      throw FormatError(path + ": /gps/lonlat: expected " + std::to_string(m.gps_time.size()) + " x 2");
+    m.gps_longitude.resize(s.rows);
+    m.gps_latitude.resize(s.rows);
+    f.read_column_into("/gps/lonlat", 0, m.gps_longitude);
+    f.read_column_into("/gps/lonlat", 1, m.gps_latitude);
+    if (f.has("/gps/halfwidth")) {
+      const H5Shape h = f.shape("/gps/halfwidth");
+      if (h.rank != 2 || h.columns != 2 || h.rows != s.rows)
+        throw FormatError(path + ": /gps/halfwidth: expected " + std::to_string(s.rows) + " x 2");
+      m.gps_given_north_halfwidth.resize(h.rows);
+      m.gps_given_east_halfwidth.resize(h.rows);
+      f.read_column_into("/gps/halfwidth", 0, m.gps_given_north_halfwidth);
+      f.read_column_into("/gps/halfwidth", 1, m.gps_given_east_halfwidth);
+    }
+  }
+  if (require_all("/marks", {"time", "mine", "range", "side"})) {
+    m.mark_time = f.read_doubles("/marks/time", 1);
+    m.mark_mine = f.read_ints("/marks/mine", 1);
+    m.mark_range = f.read_doubles("/marks/range", 1);
+    m.mark_side = f.read_ints("/marks/side", 1);
+  }
+  if (f.has("/truth/position")) {
+    std::vector<double>* position[3] = {&m.truth_x, &m.truth_y, &m.truth_z};
+    columns("/truth/position", position);
+  }
+  if (f.has("/truth/mines")) m.truth_mines = f.read_doubles("/truth/mines", 2);
+  if (f.has("/truth/missed_marks")) m.truth_missed_marks = f.read_doubles("/truth/missed_marks", 2);
+  if (f.has("/truth/marks_outlier")) m.truth_marks_outlier = f.read_ints("/truth/marks_outlier", 1);
+  if (f.has("/truth/marks_mine")) m.truth_marks_mine = f.read_ints("/truth/marks_mine", 1);
+  if (f.has("/truth/gps_outlier")) m.truth_gps_outlier = f.read_ints("/truth/gps_outlier", 1);
+  validate_mission(m, path);
+  fill_local_gps(m, path);
+  return m;
+}
+
+void write_mission(const Mission& m, const std::string& path) {
+  validate_mission(m, path);
+  AtomicOutput out(path);
+  {
+    H5File f = H5File::create(out.temp_path(), path);
+    const std::size_t n = m.size();
+    const auto interleave = [&](const std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& c) {
+      std::vector<double> rows(3 * a.size());
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        rows[3 * k] = a[k];
+        rows[3 * k + 1] = b[k];
+        rows[3 * k + 2] = c[k];
+      }
+      return rows;
+    };
+    f.write("/nav/time", m.time, n);
+    f.write("/nav/attitude", interleave(m.roll, m.pitch, m.heading), n, 3, 2);
+    f.write("/nav/velocity", interleave(m.vx, m.vy, m.vz), n, 3, 2);
+    f.write("/nav/altitude", m.altitude, n);
+    f.write("/nav/depth", m.depth, n);
+    for (const NavChannel& c : nav_channels())
+      if (const std::vector<double>& hw = m.half_widths.*c.half_widths; !hw.empty()) f.write(half_width_dataset(c), hw, n);
+    const std::size_t g = m.gps_time.size();
+    f.write("/gps/time", m.gps_time, g);
+    std::vector<double> lonlat(2 * g);
+    for (std::size_t i = 0; i < g; ++i) {
+      lonlat[2 * i] = m.gps_longitude[i];
+      lonlat[2 * i + 1] = m.gps_latitude[i];
+    }
+    f.write("/gps/lonlat", lonlat, g, 2, 2);
+    if (!m.gps_given_north_halfwidth.empty()) {
+      std::vector<double> bounds(2 * g);
+      for (std::size_t i = 0; i < g; ++i) {
+        bounds[2 * i] = m.gps_given_north_halfwidth[i];
+        bounds[2 * i + 1] = m.gps_given_east_halfwidth[i];
+      }
+      f.write("/gps/halfwidth", bounds, g, 2, 2);
+    }
+    const std::size_t mk = m.mark_count();
+    f.write("/marks/time", m.mark_time, mk);
+    f.write("/marks/mine", m.mark_mine, mk);
+    f.write("/marks/range", m.mark_range, mk);
+    f.write("/marks/side", m.mark_side, mk);
+    if (m.has_truth()) f.write("/truth/position", interleave(m.truth_x, m.truth_y, m.truth_z), n, 3, 2);
+    if (!m.truth_mines.empty()) f.write("/truth/mines", m.truth_mines, m.truth_mines.size() / 3, 3, 2);
+    if (!m.truth_missed_marks.empty())
+      f.write("/truth/missed_marks", m.truth_missed_marks, m.truth_missed_marks.size() / 3, 3, 2);
+    if (!m.truth_marks_outlier.empty()) f.write("/truth/marks_outlier", m.truth_marks_outlier, mk);
+    if (!m.truth_marks_mine.empty()) f.write("/truth/marks_mine", m.truth_marks_mine, mk);
+    if (!m.truth_gps_outlier.empty()) f.write("/truth/gps_outlier", m.truth_gps_outlier, g);
+    write_format(f, kFormat, kVersions);
+    f.set_attribute("/", "origin_latitude", m.origin.latitude);
+    f.set_attribute("/", "origin_longitude", m.origin.longitude);
+    f.set_attribute("/", "mine_count", static_cast<std::int64_t>(m.mine_count));
+    f.create_group("/model");
+    for (const SensorModelField& field : sensor_model_fields()) f.set_attribute("/model", std::string(field.key), m.model.*field.member);
+    f.set_attribute("/model", "sonar_side", std::string(sonar_side_name(m.model.sonar_side)));
+    f.close();
+  }
+  out.commit();
+}
+
+}  // namespace gesmi::io

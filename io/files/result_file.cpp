@@ -1,0 +1,298 @@
+#include "io/files/result_file.h"
+
+#include <cmath>
+#include <limits>
+
+#include "io/output/atomic_output.h"
+#include "io/imports/csv_number.h"
+#include "io/format_error.h"
+#include "io/hdf5/h5_digest.h"
+#include "io/hdf5/h5_file.h"
+#include "io/hdf5/h5_format.h"
+#include "solver/network/mission_network.h"
+
+namespace gesmi::io {
+namespace {
+
+constexpr const char* kFormat = "gesmi-result";
+// 1: before digests (no format_version attribute); 2: per-dataset and root SHA-256.
+constexpr H5FormatVersions kVersions{.current = 2, .oldest = 1, .when_absent = 1};
+
+// Every dataset of a result, in the order the root digest lists them.
+const char* const kDatasets[] = {"/time",          "/tube/lower",       "/tube/upper",     "/increments/lower",
+                                 "/increments/upper", "/mines/lower",   "/mines/upper",    "/waterfall/lower",
+                                 "/waterfall/upper", "/marks/candidates", "/marks/outlier", "/marks/time",
+                                 "/marks/range",    "/marks/mine",       "/marks/side",     "/gps/outlier"};
+
+// The root attributes the root digest covers (timings are informative and left out).
+std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& r) {
+  const MissionSolution& s = r.solution;
+  return {{"status", s.report.consistent ? "consistent" : "inconsistent"},
+          {"mode", solve_mode_name(s.report.mode)},
+          {"inconsistency", s.report.message},
+          {"sweeps", std::to_string(s.report.sweeps)},
+          {"converged", std::to_string(int{s.report.converged})},
+          {"minimal_outliers", std::to_string(s.report.minimal_outliers)},
+          {"mine_count", std::to_string(s.mine_count)},
+          {"navigation_sha256", r.navigation_digest},
+          {"bounds_sha256", r.bounds_digest},
+          {"marks_sha256", r.marks_digest},
+          {"mark_count", std::to_string(s.mark_count())},
+          {"gesmi_version", r.version}};
+}
+
+SolveMode mode_named(const std::string& name) {
+  for (const SolveMode m : {SolveMode::cold, SolveMode::warm, SolveMode::outliers, SolveMode::minimal_outliers})
+    if (name == solve_mode_name(m)) return m;
+  return SolveMode::cold;
+}
+
+// Interval arrays as N x 3 lower / upper datasets (empty bounds as NaN).
+void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interval>* axes[3], std::size_t n) {
+  std::vector<double> lower(3 * n), upper(3 * n);
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const Interval& x = (*axes[c])[k];
+      lower[3 * k + c] = x.is_empty() ? NAN : x.lo();
+      upper[3 * k + c] = x.is_empty() ? NAN : x.hi();
+    }
+  write_digested(f, prefix + "/lower", lower, n, 3, 2);
+  write_digested(f, prefix + "/upper", upper, n, 3, 2);
+}
+
+[[noreturn]] void bad(const H5File& f, const std::string& object, const std::string& reason) {
+  throw FormatError(f.path() + ": " + object + ": " + reason);
+}
+
+// Reads N x 3 bounds; an interval is [lo, hi] with lo <= hi, lo < +inf, hi > -inf,
+// or empty (both NaN).
+void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interval>* axes[3], std::size_t n,
+                 bool verified) {
+  std::vector<double> lower(3 * n), upper(3 * n);
+  f.read_doubles_into(prefix + "/lower", lower);
+  f.read_doubles_into(prefix + "/upper", upper);
+  if (verified) {
+    verify_digest(f, prefix + "/lower", lower, n, 3);
+    verify_digest(f, prefix + "/upper", upper, n, 3);
+  }
+  for (std::size_t c = 0; c < 3; ++c) axes[c]->resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double lo = lower[3 * k + c], hi = upper[3 * k + c];
+      const bool empty = std::isnan(lo) && std::isnan(hi);
+      if (!empty && !(lo <= hi && lo < INFINITY && hi > -INFINITY))
+        bad(f, prefix, "row " + std::to_string(k) + ": not an interval (lower " + format_number(lo) + ", upper " +
+                           format_number(hi) + ")");
+      (*axes[c])[k] = empty ? Interval::empty() : Interval(lo, hi);
+    }
+}
+
+void expect_flags(const H5File& f, const std::string& dataset, const std::vector<std::int32_t>& values) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (values[i] != 0 && values[i] != 1) bad(f, dataset, "row " + std::to_string(i) + ": expected 0 or 1");
+}
+
+}  // namespace
+
+void write_result(const SolveResult& r, const std::string& path) {
+  const MissionSolution& s = r.solution;
+  AtomicOutput out(path);
+  {
+    H5File f = H5File::create(out.temp_path(), out.final_path());
+    const TubeDomains& d = s.domains;
+    const std::size_t n = d.size();
+    write_digested(f, "/time", s.time, s.time.size());
+    const std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
+    write_bounds(f, "/tube", tube, n);
+    const std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
+    write_bounds(f, "/increments", increments, d.dx.size());
+    std::vector<Interval> mx, my, mz;
+    for (const Vec3I& m : d.mines) {
+      mx.push_back(m[0]);
+      my.push_back(m[1]);
+      mz.push_back(m[2]);
+    }
+    const std::vector<Interval>* mines[3] = {&mx, &my, &mz};
+    write_bounds(f, "/mines", mines, d.mines.size());
+    const std::size_t k = static_cast<std::size_t>(s.mine_count);
+    write_digested(f, "/waterfall/lower", s.waterfall.lower, s.waterfall.steps, s.waterfall.mines, 2);
+    write_digested(f, "/waterfall/upper", s.waterfall.upper, s.waterfall.steps, s.waterfall.mines, 2);
+    std::vector<std::int32_t> candidates(s.candidates.size() * k);
+    for (std::size_t j = 0; j < s.candidates.size(); ++j)
+      for (std::size_t i = 0; i < k; ++i) candidates[j * k + i] = static_cast<std::int32_t>(s.candidates[j] >> i & 1);
+    write_digested(f, "/marks/candidates", candidates, s.candidates.size(), k, 2);
+    write_digested(f, "/marks/outlier", s.mark_outlier, s.mark_outlier.size());
+    write_digested(f, "/marks/time", s.mark_time, s.mark_time.size());
+    write_digested(f, "/marks/range", s.mark_range, s.mark_range.size());
+    write_digested(f, "/marks/mine", s.mark_mine, s.mark_mine.size());
+    write_digested(f, "/marks/side", s.mark_side, s.mark_side.size());
+    write_digested(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size());
+    write_format(f, kFormat, kVersions);
+    const std::vector<std::pair<std::string, std::string>> fields = root_fields(r);
+    f.set_attribute("/", "status", std::string(s.report.consistent ? "consistent" : "inconsistent"));
+    f.set_attribute("/", "mode", std::string(solve_mode_name(s.report.mode)));
+    f.set_attribute("/", "inconsistency", s.report.message);
+    f.set_attribute("/", "sweeps", std::int64_t{s.report.sweeps});
+    f.set_attribute("/", "converged", std::int64_t{s.report.converged});
+    f.set_attribute("/", "minimal_outliers", std::int64_t{s.report.minimal_outliers});
+    f.set_attribute("/", "mine_count", static_cast<std::int64_t>(s.mine_count));
+    f.set_attribute("/", "navigation_sha256", r.navigation_digest);
+    f.set_attribute("/", "bounds_sha256", r.bounds_digest);
+    f.set_attribute("/", "marks_sha256", r.marks_digest);
+    f.set_attribute("/", "mark_count", static_cast<std::int64_t>(s.mark_count()));
+    f.set_attribute("/", "gesmi_version", r.version);
+    for (const auto& [name, ms] : s.timings_ms) f.set_attribute("/", "timing_" + name + "_ms", ms);
+    std::vector<std::pair<std::string, std::string>> digested = fields;
+    for (const char* dataset : kDatasets) digested.emplace_back(dataset, *f.string_attribute(dataset, "sha256"));
+    f.set_attribute("/", "sha256", digest_of_fields(digested));
+    f.close();
+  }
+  out.commit();
+}
+
+SolveResult read_result(const std::string& path, bool with_waterfall) {
+  const H5File f = H5File::open_read(path);
+  SolveResult r;
+  MissionSolution& s = r.solution;
+  r.format_version = check_format(f, kFormat, "gesmi result", kVersions);
+  const bool verified = r.format_version >= 2;
+  const auto text = [&](const char* name) {
+    const auto v = f.string_attribute("/", name);
+    if (!v) bad(f, "/", std::string("missing attribute ") + name);
+    return *v;
+  };
+  const auto integer = [&](const char* name, std::int64_t lowest, std::int64_t highest) {
+    const auto v = f.int_attribute("/", name);
+    if (!v) bad(f, "/", std::string("missing attribute ") + name);
+    if (*v < lowest || *v > highest)
+      bad(f, "/", std::string("attribute ") + name + " must be between " + std::to_string(lowest) + " and " +
+                      std::to_string(highest) + ", found " + std::to_string(*v));
+    return *v;
+  };
+  const std::string status = text("status");
+  if (status != "consistent" && status != "inconsistent") bad(f, "/", "attribute status must be consistent or inconsistent");
+  s.report.consistent = status == "consistent";
+  s.report.message = text("inconsistency");
+  s.report.sweeps = static_cast<int>(integer("sweeps", 0, std::numeric_limits<std::int32_t>::max()));
+  s.report.converged = integer("converged", 0, 1) != 0;
+  s.report.minimal_outliers = static_cast<int>(integer("minimal_outliers", -1, std::numeric_limits<std::int32_t>::max()));
+  s.mine_count = static_cast<int>(integer("mine_count", 0, kMaxMines));
+  const std::int64_t mark_count = integer("mark_count", 0, static_cast<std::int64_t>(kMaxDatasetValues));
+  r.version = text("gesmi_version");
+  if (verified) {
+    const std::string mode = text("mode");
+    s.report.mode = mode_named(mode);
+    if (mode != solve_mode_name(s.report.mode)) bad(f, "/", "attribute mode is not one gesmi writes");
+    r.navigation_digest = text("navigation_sha256");
+    r.bounds_digest = text("bounds_sha256");
+    r.marks_digest = text("marks_sha256");
+  }
+  for (const char* name : {"load", "build", "propagate", "waterfall", "write"})
+    if (const auto ms = f.double_attribute("/", std::string("timing_") + name + "_ms")) s.timings_ms[name] = *ms;
+
+  s.time = f.read_doubles("/time", 1);
+  const std::size_t n = s.time.size();
+  if (verified) verify_digest(f, "/time", s.time, n, 1);
+  if (n < 2) bad(f, "/time", "expected at least 2 samples");
+  for (std::size_t k = 0; k < n; ++k)
+    if (!std::isfinite(s.time[k]) || (k > 0 && !(s.time[k] > s.time[k - 1])))
+      bad(f, "/time", "row " + std::to_string(k) + ": times must be finite and increase");
+  TubeDomains& d = s.domains;
+  std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
+  read_bounds(f, "/tube", tube, n, verified);
+  std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
+  read_bounds(f, "/increments", increments, n - 1, verified);
+  std::vector<Interval> mx, my, mz;
+  std::vector<Interval>* mines[3] = {&mx, &my, &mz};
+  const std::size_t k = static_cast<std::size_t>(s.mine_count);
+  read_bounds(f, "/mines", mines, k, verified);
+  for (std::size_t i = 0; i < k; ++i) d.mines.emplace_back(mx[i], my[i], mz[i]);
+
+  const auto marks = static_cast<std::size_t>(mark_count);
+  const H5Shape cs = f.shape("/marks/candidates");
+  if (cs.rows != marks || (cs.rows > 0 && cs.columns != k))
+    bad(f, "/marks/candidates", "expected " + std::to_string(marks) + " x " + std::to_string(k));
+  const std::vector<std::int32_t> candidates = f.read_ints("/marks/candidates");
+  if (verified) verify_digest(f, "/marks/candidates", candidates, cs.rows, cs.columns);
+  expect_flags(f, "/marks/candidates", candidates);
+  s.candidates.assign(cs.rows, 0);
+  for (std::size_t j = 0; j < cs.rows; ++j)
+    for (std::size_t i = 0; i < k; ++i)
+      if (candidates[j * k + i]) s.candidates[j] |= std::uint64_t{1} << i;
+  s.mark_outlier = f.read_ints("/marks/outlier", 1);
+  s.mark_time = f.read_doubles("/marks/time", 1);
+  s.mark_range = f.read_doubles("/marks/range", 1);
+  s.mark_mine = f.read_ints("/marks/mine", 1);
+  // Results of gesmi 0.1 kept no sides: a warm start needs them, and refuses those anyway.
+  s.mark_side = verified ? f.read_ints("/marks/side", 1) : std::vector<std::int32_t>(marks, 0);
+  if (s.mark_outlier.size() != marks || s.mark_time.size() != marks || s.mark_range.size() != marks ||
+      s.mark_mine.size() != marks || s.mark_side.size() != marks)
+    bad(f, "/marks", "expected " + std::to_string(marks) + " rows in every dataset");
+  s.gps_outlier = f.read_ints("/gps/outlier", 1);
+  if (verified) {
+    verify_digest(f, "/marks/outlier", s.mark_outlier, marks, 1);
+    verify_digest(f, "/marks/time", s.mark_time, marks, 1);
+    verify_digest(f, "/marks/range", s.mark_range, marks, 1);
+    verify_digest(f, "/marks/mine", s.mark_mine, marks, 1);
+    verify_digest(f, "/marks/side", s.mark_side, marks, 1);
+    verify_digest(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size(), 1);
+  }
+  expect_flags(f, "/marks/outlier", s.mark_outlier);
+  expect_flags(f, "/gps/outlier", s.gps_outlier);
+  for (std::size_t j = 0; j < marks; ++j) {
+    const std::string row = "row " + std::to_string(j);
+    if (!std::isfinite(s.mark_time[j])) bad(f, "/marks/time", row + ": time must be finite");
+    if (!std::isfinite(s.mark_range[j]) || s.mark_range[j] < 0.0) bad(f, "/marks/range", row + ": range must be finite and >= 0");
+    if (s.mark_mine[j] < -1 || s.mark_mine[j] >= s.mine_count)
+      bad(f, "/marks/mine", row + ": mine " + std::to_string(s.mark_mine[j]) + " is not one of the result's " +
+                                std::to_string(s.mine_count) + " mines (-1 for unknown)");
+    if (verified && s.mark_side[j] != 1 && s.mark_side[j] != -1) bad(f, "/marks/side", row + ": side must be +1 or -1");
+  }
+  if (with_waterfall) {
+    const H5Shape ws = f.shape("/waterfall/lower");
+    if (ws.rows != n || (k > 0 && ws.columns != k))
+      bad(f, "/waterfall/lower", "expected " + std::to_string(n) + " x " + std::to_string(k));
+    Waterfall& w = s.waterfall;
+    w.steps = n;
+    w.mines = k;
+    w.lower = f.read_doubles("/waterfall/lower");
+    w.upper = f.read_doubles("/waterfall/upper");
+    if (w.upper.size() != w.lower.size())
+      bad(f, "/waterfall/upper", "shape differs from /waterfall/lower");
+    if (verified) {
+      verify_digest(f, "/waterfall/lower", w.lower, ws.rows, ws.columns);
+      verify_digest(f, "/waterfall/upper", w.upper, ws.rows, ws.columns);
+    }
+    for (std::size_t i = 0; i < w.lower.size(); ++i) {
+      const double lo = w.lower[i], hi = w.upper[i];
+      if (!(std::isnan(lo) && std::isnan(hi)) && !(lo <= hi))
+        bad(f, "/waterfall", "cell " + std::to_string(i) + ": lower bound above upper bound");
+    }
+  }
+  if (verified) {
+    std::vector<std::pair<std::string, std::string>> fields = root_fields(r);
+    for (const char* dataset : kDatasets) {
+      const auto stored = f.string_attribute(dataset, "sha256");
+      if (!stored) bad(f, dataset, "has no sha256 attribute (edited or damaged)");
+      fields.emplace_back(dataset, *stored);
+    }
+    if (f.string_attribute("/", "sha256") != digest_of_fields(fields))
+      bad(f, "/", "attributes or dataset digests differ from the SHA-256 gesmi recorded when it wrote the file "
+                  "(edited or damaged); solve again to get a result you can trust");
+  }
+  if (s.report.consistent) {
+    const auto any_empty = [](const std::vector<Interval>& v) {
+      for (const Interval& x : v)
+        if (x.is_empty()) return true;
+      return false;
+    };
+    for (const auto* axis : {&d.px, &d.py, &d.pz, &d.dx, &d.dy, &d.dz})
+      if (any_empty(*axis)) bad(f, "/tube", "a consistent result with an empty domain (edited or damaged)");
+    for (const Vec3I& m : d.mines)
+      for (int c = 0; c < 3; ++c)
+        if (m[c].is_empty()) bad(f, "/mines", "a consistent result with an empty mine box (edited or damaged)");
+  }
+  return r;
+}
+
+}  // namespace gesmi::io

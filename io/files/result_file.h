@@ -1,0 +1,36 @@
+#pragma once
+// The solver's result file (docs/formats.md): a MissionSolution (tube, increments,
+// mine boxes, reconstructed waterfall, mark table, candidates and outliers, status,
+// sweeps, timings) with the digests of its inputs and the gesmi version. Written
+// atomically; read back for warm reruns and for `gesmi waterfall` / `candidates`.
+//
+// Every dataset carries its SHA-256 and the root carries one over the attributes
+// and the dataset digests: read_result() refuses a result that differs from what
+// gesmi wrote, so a warm start never trusts edited domains (docs/guarantees.md).
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "solver/solve/mission_solution.h"
+
+namespace gesmi::io {
+
+/// A result file: the solution and what proves which inputs it was computed from.
+struct SolveResult {
+  MissionSolution solution;
+  std::string navigation_digest, bounds_digest, marks_digest;  // SHA-256 of the inputs (io/files/mission_digest.h)
+  std::string version;  // gesmi that wrote it
+  /// Layout of the file read: 1 for results written before digests existed (readable,
+  /// but unfit for a warm start), 2 today.
+  std::int64_t format_version = 2;
+};
+
+void write_result(const SolveResult& result, const std::string& path);
+/// Reads a result; FormatError naming the file and dataset when it is not a valid
+/// gesmi result or differs from what gesmi wrote (the waterfall is read only when
+/// with_waterfall).
+SolveResult read_result(const std::string& path, bool with_waterfall = true);
+
+}  // namespace gesmi::io

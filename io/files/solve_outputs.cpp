@@ -1,0 +1,34 @@
+#include "io/files/solve_outputs.h"
+
+#include <filesystem>
+
+#include "io/plot/plot_envelope.h"
+#include "io/exports/result_exports.h"
+#include "solver/network/mission_network.h"
+
+namespace gesmi::io {
+
+std::vector<std::string> solve_output_siblings(const std::string& result_path) {
+  std::filesystem::path p(result_path);
+  if (p.extension() == ".h5") p.replace_extension();
+  const std::string base = p.string();
+  return {base + ".mines.csv", base + ".geojson", base + ".envelope.png"};
+}
+
+std::vector<std::string> write_solve_outputs(const SolveResult& result, const Mission& mission,
+                                             const std::string& result_path, const std::string& mission_name) {
+  const MissionSolution& s = result.solution;
+  const std::vector<std::string> siblings = solve_output_siblings(result_path);
+  write_result(result, result_path);
+  write_mines_csv(s.domains, siblings[0]);
+  write_geojson(s.domains, mission.origin, siblings[1]);
+  EnvelopePicture picture;
+  picture.domains = &s.domains;
+  picture.mission = &mission;
+  for (const PositionFix& fix : gps_fixes(mission)) picture.fix_boxes.push_back(fix.box);
+  picture.title = "gesmi envelope: " + mission_name + (s.report.consistent ? "" : " (INCONSISTENT)");
+  write_envelope_png(picture, siblings[2]);
+  return {result_path, siblings[0], siblings[1], siblings[2]};
+}
+
+}  // namespace gesmi::io

@@ -1,0 +1,22 @@
+#pragma once
+// The files `gesmi solve -o RESULT.h5` writes: the result and, beside it, the mine
+// boxes as CSV (RESULT.mines.csv), GeoJSON (RESULT.geojson) and the envelope picture
+// (RESULT.envelope.png).
+
+#include <string>
+#include <vector>
+
+#include "io/files/result_file.h"
+#include "solver/mission/mission.h"
+
+namespace gesmi::io {
+
+/// RESULT.mines.csv, RESULT.geojson, RESULT.envelope.png for a result path.
+std::vector<std::string> solve_output_siblings(const std::string& result_path);
+
+/// Writes the result and its siblings (each atomically; inside an OutputSet, as one
+/// set); `mission_name` titles the picture. Returns the paths written.
+std::vector<std::string> write_solve_outputs(const SolveResult& result, const Mission& mission,
+                                             const std::string& result_path, const std::string& mission_name);
+
+}  // namespace gesmi::io

@@ -1,0 +1,129 @@
+#include "io/imports/import_mission.h"
+
+#include <cmath>
+#include <fstream>
+
+#include "io/imports/csv_number.h"
+#include "io/format_error.h"
+#include "io/geodesy.h"
+#include "io/imports/import_gps_csv.h"
+#include "io/imports/import_marks_csv.h"
+#include "io/imports/import_nav_csv.h"
+#include "io/imports/import_truth_csv.h"
+#include "io/files/mission_file.h"
+#include "io/files/sensor_model_yaml.h"
+#include "solver/network/mission_network.h"
+
+namespace gesmi::io {
+namespace {
+
+std::ifstream open_input(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FormatError(path + ": cannot open the file (does it exist?)");
+  return in;
+}
+
+SensorModel model_from(const ImportInputs& inputs) {
+  SensorModel model;
+  if (!inputs.config.empty()) merge_sensor_model_yaml(inputs.config, model);
+  return model;
+}
+
+void set_mine_count(Mission& m, std::optional<int> mines, const std::string& truth_source) {
+  if (mines) {
+    if (*mines < 0 || *mines > kMaxMines)
+      throw FormatError("--mines: " + std::to_string(*mines) + " is not between 0 and " + std::to_string(kMaxMines));
+    if (!m.truth_mines.empty() && m.truth_mines.size() != 3 * static_cast<std::size_t>(*mines))
+      throw FormatError("--mines: " + std::to_string(*mines) + " differs from the " +
+                        std::to_string(m.truth_mines.size() / 3) + " mines of " + truth_source);
+    m.mine_count = *mines;
+  } else if (!m.truth_mines.empty()) {
+    m.mine_count = static_cast<int>(m.truth_mines.size() / 3);
+  }
+}
+
+void read_marks(Mission& m, const std::string& path) {
+  std::ifstream in = open_input(path);
+  replace_marks(m, read_marks_csv(in, path, mark_rules(m)));
+}
+
+}  // namespace
+
+Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs) {
+  Mission m;
+  m.model = model_from(inputs);
+  {
+    std::ifstream in = open_input(nav_csv);
+    NavLog nav = read_nav_csv(in, nav_csv);
+    m.time = std::move(nav.time);
+    m.roll = std::move(nav.roll);
+    m.pitch = std::move(nav.pitch);
+    m.heading = std::move(nav.heading);
+    m.vx = std::move(nav.vx);
+    m.vy = std::move(nav.vy);
+    m.vz = std::move(nav.vz);
+    m.altitude = std::move(nav.altitude);
+    m.depth = std::move(nav.depth);
+    m.half_widths = std::move(nav.half_widths);
+  }
+  GpsLog gps;
+  if (!inputs.gps.empty()) {
+    std::ifstream in = open_input(inputs.gps);
+    gps = read_gps_csv(in, inputs.gps, m.time.front(), m.time.back());
+  }
+  if (inputs.origin) {
+    m.origin = *inputs.origin;
+  } else if (!gps.time.empty()) {
+    m.origin = {gps.latitude[0], gps.longitude[0]};
+  } else {
+    throw FormatError(nav_csv + ": no GPS fix to take the local frame's origin from: give --origin LAT,LON");
+  }
+  const LocalFrame frame(m.origin);
+  for (std::size_t i = 0; i < gps.time.size(); ++i) {
+    const NorthEast p = frame.to_local(gps.latitude[i], gps.longitude[i]);
+    if (std::hypot(p.north, p.east) > kLocalFrameZone)
+      throw FormatError(inputs.gps + ":" + std::to_string(gps.line[i]) + ": longitude, latitude: the fix is " +
+                        format_number(std::round(std::hypot(p.north, p.east))) + " m from the origin, beyond the " +
+                        format_number(kLocalFrameZone) + " m zone of the local frame");
+  }
+  m.gps_time = std::move(gps.time);
+  m.gps_longitude = std::move(gps.longitude);
+  m.gps_latitude = std::move(gps.latitude);
+  m.gps_given_north_halfwidth = std::move(gps.north_halfwidth);
+  m.gps_given_east_halfwidth = std::move(gps.east_halfwidth);
+
+  if (!inputs.truth.empty()) {
+    std::ifstream in = open_input(inputs.truth);
+    TruthTrack truth = read_truth_csv(in, inputs.truth, m.time);
+    m.truth_x = std::move(truth.north);
+    m.truth_y = std::move(truth.east);
+    m.truth_z = std::move(truth.down);
+  }
+  if (!inputs.truth_mines.empty()) {
+    std::ifstream in = open_input(inputs.truth_mines);
+    m.truth_mines = read_truth_mines_csv(in, inputs.truth_mines);
+  }
+  set_mine_count(m, inputs.mines, inputs.truth_mines);
+  if (!inputs.marks.empty()) read_marks(m, inputs.marks);
+  validate_mission(m, nav_csv);
+  fill_local_gps(m, inputs.gps);
+  return m;
+}
+
+Mission import_gesmi_txt(const std::string& path, GesmiXy xy, const ImportInputs& inputs) {
+  const SensorModel model = model_from(inputs);
+  std::ifstream in = open_input(path);
+  Mission m = mission_from_gesmi_txt(read_gesmi_txt(in, path), path, inputs.origin.value_or(kRedermorStartFix), model, xy);
+  set_mine_count(m, inputs.mines, path);  // a text log has no truth mines
+  if (!inputs.marks.empty()) read_marks(m, inputs.marks);
+  validate_mission(m, path);
+  fill_local_gps(m, path);
+  return m;
+}
+
+void import_marks(Mission& m, const std::string& marks_csv, std::optional<int> mines) {
+  set_mine_count(m, mines, "the mission's truth");
+  read_marks(m, marks_csv);
+}
+
+}  // namespace gesmi::io

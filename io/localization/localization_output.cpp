@@ -1,0 +1,170 @@
+#include "io/localization/localization_output.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <unistd.h>
+
+#include "io/output/atomic_output.h"
+#include "io/format_error.h"
+#include "io/localization/localization_hdf5.h"
+#include "io/plot/localization_picture.h"
+
+namespace gesmi::io {
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+std::string format(const char* pattern, auto... values) {
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer, pattern, values...);
+  return buffer;
+}
+
+/// Name of datum i: the sensor's name (bearings: name#k, k-th bearing of the list).
+std::string datum_name(const LocalizationProblem& p, std::size_t i) {
+  if (i < p.ranges.size()) return p.range_sensors[p.ranges[i].sensor].name;
+  const std::size_t m = i - p.ranges.size();
+  return p.bearing_sensors[p.bearings[m].sensor].name + "#" + std::to_string(m);
+}
+
+std::string outlier_names(const LocalizationProblem& p, const LocalizationHypothesis& h) {
+  std::string s;
+  for (std::size_t i : h.outliers.outliers) s += (s.empty() ? "" : " ") + datum_name(p, i);
+  return s.empty() ? "none" : s;
+}
+
+std::string association_text(const LocalizationProblem& p, const LocalizationHypothesis& h) {
+  std::string s;
+  for (std::size_t i = 0; i < h.range_walls.size(); ++i)
+    s += (s.empty() ? "" : " ") + datum_name(p, i) + ":" + (h.range_walls[i] < 0 ? "-" : "w" + std::to_string(h.range_walls[i]));
+  for (std::size_t m = 0; m < h.bearing_landmarks.size(); ++m)
+    s += (s.empty() ? "" : " ") + datum_name(p, p.ranges.size() + m) + ":" +
+         (h.bearing_landmarks[m] < 0 ? "-" : "L" + std::to_string(h.bearing_landmarks[m]));
+  return s;
+}
+
+std::string interval_text(const Interval& x, double unit) {
+  return format("[%.4f, %.4f]", x.lo() * unit, x.hi() * unit);
+}
+
+}  // namespace
+
+std::string localization_summary(const LocalizationProblem& p, const LocalizationResult& r) {
+  std::string s = format("scenario %s: %zu range and %zu bearing measurements, %zu walls, %zu landmarks\n",
+                         p.name.empty() ? "(unnamed)" : p.name.c_str(), p.ranges.size(), p.bearings.size(),
+                         p.map.walls.size(), p.map.landmarks.size());
+  if (r.gomne) {
+    const GomneResult& g = *r.gomne;
+    s += format("policy: minimal number of outliers (GOMNE), epsilon0 %g, epsilon_min %g\n", p.epsilon, p.epsilon_min);
+    for (const GomneStep& step : g.steps)
+      s += format("  SIVIA(q=%d) epsilon %-9g inner %8zu  boundary %8zu  boxes examined %10zu  %.3f s\n", step.q,
+                  step.epsilon, step.inner_boxes, step.boundary_boxes, step.boxes_visited, step.seconds);
+    if (!g.found)
+      s += "no consistent pose found for any number of outliers tried\n";
+    else if (g.exact() && g.q_star == 0)
+      s += "minimal number of outliers q* = 0: every measurement is consistent\n";
+    else if (g.exact())
+      s += format("minimal number of outliers q* = %d (every q < %d proved impossible)\n", g.q_star, g.q_star);
+    else
+      s += format("number of outliers between %d and %d (epsilon_min reached: outer enclosure only)\n", g.q_lower, g.q_star);
+    if (g.q_used != g.q_star && g.found) s += format("paving characterises S_%d (extra margin of %d outliers)\n", g.q_used, p.extra_outliers);
+  } else {
+    s += format("policy: fixed, up to %d outliers allowed; epsilon %g; %zu boxes examined\n", p.outliers, p.epsilon,
+                r.paving.report.boxes_visited);
+  }
+  const SiviaReport& rep = r.paving.report;
+  s += format("paving: %zu inner boxes (volume %.6g), %zu boundary boxes (volume %.6g); %.3f s in all\n",
+              r.paving.inner.size(), r.paving.inner.volume(), r.paving.boundary.size(), r.paving.boundary.volume(), r.seconds);
+  if (rep.limit_hit() || (r.gomne && r.gomne->limit_hit))
+    s += "WARNING: a box or time limit was hit: undetermined boxes were kept unbisected\n";
+  if (rep.boxes_unsplittable > 0)
+    s += format("NOTE: %zu undetermined boxes were too narrow for doubles to bisect (epsilon is below the spacing of "
+                "doubles there): kept as boundary boxes\n", rep.boxes_unsplittable);
+  s += format("hypotheses (connected components): %zu\n", r.hypotheses.size());
+  for (std::size_t k = 0; k < r.hypotheses.size(); ++k) {
+    const LocalizationHypothesis& h = r.hypotheses[k];
+    const Box& b = h.component.hull;
+    s += format("  #%zu x %s  y %s  theta %s deg  (%zu inner, %zu boundary boxes)%s\n", k + 1, interval_text(b[0], 1).c_str(),
+                interval_text(b[1], 1).c_str(), interval_text(b[2], kDeg).c_str(), h.component.inner.size(),
+                h.component.boundary.size(), h.contains_truth ? "  <- holds the true pose" : "");
+    s += format("     outliers: %s%s\n", outlier_names(p, h).c_str(),
+                h.outliers.determined ? "" : (h.outliers.point.empty() ? " (undetermined)" : " (read at a point with fewer)"));
+    s += "     associations: " + association_text(p, h) + "\n";
+  }
+  if (p.truth)
+    s += format("true pose (%.4f, %.4f, %.3f deg) %s\n", p.truth->x, p.truth->y, p.truth->theta * kDeg,
+                r.truth_enclosed ? "is enclosed" : "is NOT enclosed");
+  return s;
+}
+
+std::string paving_csv(const Paving& paving, const std::vector<int>& component_of_box) {
+  std::string s = "component,x_lo,x_hi,y_lo,y_hi,theta_lo_rad,theta_hi_rad\n";
+  for (std::size_t i = 0; i < paving.size(); ++i) {
+    const auto b = paving.box(i);
+    s += format("%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", component_of_box[i], b[0].lo(), b[0].hi(), b[1].lo(), b[1].hi(),
+                b[2].lo(), b[2].hi());
+  }
+  return s;
+}
+
+std::string components_csv(const LocalizationProblem& p, const LocalizationResult& r) {
+  std::string s =
+      "component,inner_boxes,boundary_boxes,x_lo,x_hi,y_lo,y_hi,theta_lo_rad,theta_hi_rad,inner_volume,boundary_volume,"
+      "outliers,outliers_determined,associations,holds_truth\n";
+  for (std::size_t k = 0; k < r.hypotheses.size(); ++k) {
+    const LocalizationHypothesis& h = r.hypotheses[k];
+    const Box& b = h.component.hull;
+    s += format("%zu,%zu,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.9g,%.9g,", k + 1, h.component.inner.size(),
+                h.component.boundary.size(), b[0].lo(), b[0].hi(), b[1].lo(), b[1].hi(), b[2].lo(), b[2].hi(),
+                h.component.inner_volume, h.component.boundary_volume);
+    s += "\"" + outlier_names(p, h) + "\"," + (h.outliers.determined ? "1" : "0") + ",\"" + association_text(p, h) + "\"," +
+         (h.contains_truth ? "1" : "0") + "\n";
+  }
+  return s;
+}
+
+void check_output_folder(const std::string& folder) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (folder.empty()) throw FormatError("output folder: empty name");
+  const fs::path path(folder);
+  if (fs::exists(path, ec)) {
+    if (!fs::is_directory(path, ec)) throw FormatError(folder + ": exists and is not a folder");
+    if (::access(path.c_str(), W_OK) != 0) throw FormatError(folder + ": folder is not writable");
+    return;
+  }
+  const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent, ec)) throw FormatError(folder + ": parent folder " + parent.string() + " does not exist");
+  if (::access(parent.c_str(), W_OK) != 0) throw FormatError(folder + ": parent folder " + parent.string() + " is not writable");
+}
+
+std::vector<std::string> write_localization_outputs(const std::string& folder, const LocalizationProblem& p,
+                                                    const LocalizationResult& r) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  if (ec) throw FormatError(folder + ": cannot create folder: " + ec.message());
+  std::vector<int> inner_component(r.paving.inner.size(), 0), boundary_component(r.paving.boundary.size(), 0);
+  for (std::size_t k = 0; k < r.hypotheses.size(); ++k) {
+    for (std::size_t i : r.hypotheses[k].component.inner) inner_component[i] = static_cast<int>(k + 1);
+    for (std::size_t i : r.hypotheses[k].component.boundary) boundary_component[i] = static_cast<int>(k + 1);
+  }
+  const std::string base = (fs::path(folder) / "").string();
+  std::vector<std::string> written;
+  const auto text = [&](const std::string& name, const std::string& content) {
+    write_text_file(base + name, content);
+    written.push_back(base + name);
+  };
+  text("inner.csv", paving_csv(r.paving.inner, inner_component));
+  text("boundary.csv", paving_csv(r.paving.boundary, boundary_component));
+  text("components.csv", components_csv(p, r));
+  text("summary.txt", localization_summary(p, r));
+  write_localization_hdf5(base + "paving.h5", p, r);
+  written.push_back(base + "paving.h5");
+  write_localization_picture(base + "paving.png", p, r);
+  written.push_back(base + "paving.png");
+  return written;
+}
+
+}  // namespace gesmi::io

@@ -1,0 +1,111 @@
+#include "io/output/output_set.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+
+#include "io/output/atomic_output.h"
+#include "io/format_error.h"
+#include "io/output/interrupt_cleanup.h"
+
+namespace gesmi::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+OutputSet*& innermost() {
+  static OutputSet* set = nullptr;
+  return set;
+}
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec) && !ec;
+}
+
+}  // namespace
+
+OutputSet::OutputSet(std::vector<std::string> inputs) : inputs_(std::move(inputs)), outer_(innermost()) {
+  innermost() = this;
+}
+
+OutputSet::~OutputSet() {
+  innermost() = outer_;
+  if (committed_) return;
+  for (const Pending& p : pending_) {
+    std::remove(p.temp.c_str());
+    untrack_temporary(p.slot);
+  }
+  for (const std::string& path : nested_written_) std::remove(path.c_str());
+  for (auto it = created_folders_.rbegin(); it != created_folders_.rend(); ++it) {
+    ::rmdir(it->first.c_str());  // only if still empty
+    untrack_temporary(it->second);
+  }
+}
+
+OutputSet* OutputSet::active() { return innermost(); }
+
+void OutputSet::check(const std::string& path) const {
+  check_writable_target(path);
+  for (const std::string& input : inputs_)
+    if (!input.empty() && same_file(path, input))
+      throw FormatError(path + ": is also an input of this command (" + input + "); write to another file");
+}
+
+void OutputSet::prepare_folder(const std::string& folder) {
+  std::error_code ec;
+  if (fs::exists(fs::symlink_status(folder, ec))) {
+    if (!fs::is_directory(folder, ec)) throw FormatError(folder + ": exists and is not a folder");
+    if (::access(folder.c_str(), W_OK) != 0) throw FormatError(folder + ": folder is not writable");
+    return;
+  }
+  const fs::path path = fs::path(folder).lexically_normal();
+  const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent, ec)) throw FormatError(folder + ": parent folder " + parent.string() + " does not exist");
+  if (::access(parent.c_str(), W_OK) != 0) throw FormatError(folder + ": parent folder " + parent.string() + " is not writable");
+  if (!fs::create_directory(path, ec) || ec) throw FormatError(folder + ": cannot create the folder: " + ec.message());
+  created_folders_.emplace_back(path.string(), track_temporary(path.string(), true));
+}
+
+void OutputSet::owns(const std::string& path) { owned_.push_back(path); }
+
+void OutputSet::adopt(std::string temp_path, std::string final_path, int slot) {
+  pending_.push_back({std::move(temp_path), std::move(final_path), slot});
+}
+
+void OutputSet::commit() {
+  // Fault injection for the test suite: hold the complete temporaries for a while, so
+  // that a test can interrupt the command at the worst moment.
+  if (const char* pause = std::getenv("GESMI_TEST_PAUSE_BEFORE_COMMIT"); pause && !pending_.empty())
+    ::usleep(static_cast<useconds_t>(std::clamp(std::atof(pause), 0.0, 10.0) * 1e6));
+  std::vector<std::string> renamed;
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    const Pending& p = pending_[i];
+    if (std::rename(p.temp.c_str(), p.final.c_str()) != 0) {
+      const std::string why = std::strerror(errno);
+      for (const std::string& done : renamed) std::remove(done.c_str());
+      pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(i));
+      throw FormatError(p.final + ": cannot write: " + why);
+    }
+    untrack_temporary(p.slot);
+    renamed.push_back(p.final);
+  }
+  pending_.clear();
+  written_.insert(written_.end(), renamed.begin(), renamed.end());
+  for (const std::string& path : owned_) {
+    const bool rewritten = std::any_of(written_.begin(), written_.end(), [&](const std::string& w) { return w == path; });
+    std::error_code ec;
+    if (!rewritten && fs::is_regular_file(fs::symlink_status(path, ec))) fs::remove(path, ec);
+  }
+  for (const auto& [folder, slot] : created_folders_) untrack_temporary(slot);
+  created_folders_.clear();
+  if (outer_) outer_->nested_written_.insert(outer_->nested_written_.end(), written_.begin(), written_.end());
+  committed_ = true;
+}
+
+}  // namespace gesmi::io

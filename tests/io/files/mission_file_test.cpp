@@ -1,0 +1,147 @@
+// The HDF5 mission file: round trip, a read by Debian's h5py, and every bad input
+// named in one line.
+
+#include "io/files/mission_file.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "io/format_error.h"
+#include "io/hdf5/h5_file.h"
+#include "tests/support/run_command.h"
+#include "tests/support/tiny_mission.h"
+
+namespace gesmi::io {
+namespace {
+
+Mission sample_mission() {
+  Mission m = test::make_tiny_mission(5, test::TinyErrors::uniform).mission;
+  m.origin = {48.212920614, -4.458227931};
+  m.gps_time = {m.time.front(), m.time.back()};
+  m.gps_latitude = {48.212920614, 48.2130};
+  m.gps_longitude = {-4.458227931, -4.4580};
+  return m;
+}
+
+std::string expect_error(const std::string& path) {
+  try {
+    read_mission(path);
+  } catch (const FormatError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    EXPECT_EQ(what.rfind(path, 0), 0u) << what;  // starts with the file name
+    return what;
+  }
+  ADD_FAILURE() << "no error for " << path;
+  return {};
+}
+
+TEST(MissionFile, RoundTripKeepsEveryField) {
+  const Mission m = sample_mission();
+  const std::string path = test::temp_folder("mission") + "/m.h5";
+  write_mission(m, path);
+  const Mission r = read_mission(path);
+  EXPECT_EQ(r.time, m.time);
+  EXPECT_EQ(r.heading, m.heading);
+  EXPECT_EQ(r.vy, m.vy);
+  EXPECT_EQ(r.depth, m.depth);
+  EXPECT_EQ(r.mark_range, m.mark_range);
+  EXPECT_EQ(r.mark_mine, m.mark_mine);
+  EXPECT_EQ(r.truth_y, m.truth_y);
+  EXPECT_EQ(r.truth_mines, m.truth_mines);
+  EXPECT_EQ(r.gps_latitude, m.gps_latitude);
+  EXPECT_EQ(r.mine_count, m.mine_count);
+  EXPECT_EQ(r.model.heading, m.model.heading);
+  EXPECT_EQ(r.model.sonar_side, m.model.sonar_side);
+  ASSERT_EQ(r.gps_north.size(), 2u);
+  EXPECT_NEAR(r.gps_north[0], 0.0, 1e-6);  // the first fix is the origin
+  EXPECT_GE(r.gps_north_halfwidth[0], m.model.gps_metres);
+}
+
+TEST(MissionFile, IsReadableByH5py) {
+  const std::string path = test::temp_folder("mission") + "/m.h5";
+  write_mission(sample_mission(), path);
+  const std::string script = "import h5py,sys\nf=h5py.File(sys.argv[1],'r')\nprint(f['/nav/attitude'].shape[0], f['/nav/attitude'].shape[1], f.attrs['mine_count'], f['/marks/time'].shape[0])\n";
+  const std::string script_path = test::temp_folder("py") + "/read.py";
+  std::ofstream(script_path) << script;
+  const std::string out_path = script_path + ".out";
+  ASSERT_EQ(std::system(("/usr/bin/python3 " + script_path + " " + path + " > " + out_path).c_str()), 0);
+  std::ifstream in(out_path);
+  std::size_t rows = 0, columns = 0, mines = 0, marks = 0;
+  in >> rows >> columns >> mines >> marks;
+  EXPECT_EQ(rows, 3001u);
+  EXPECT_EQ(columns, 3u);
+  EXPECT_EQ(mines, 1u);
+  EXPECT_EQ(marks, 2u);
+}
+
+// A valid mission file edited by h5py (independent of gesmi's writer).
+std::string edited(const std::string& python_edit) {
+  const std::string folder = test::temp_folder("edit");
+  const std::string path = folder + "/m.h5";
+  write_mission(sample_mission(), path);
+  const std::string script = folder + "/edit.py";
+  std::ofstream(script) << "import h5py, numpy as np, sys\nf = h5py.File(sys.argv[1], 'r+')\n" << python_edit << "\nf.close()\n";
+  EXPECT_EQ(std::system(("/usr/bin/python3 " + script + " " + path).c_str()), 0);
+  return path;
+}
+
+TEST(MissionFile, NamesTheProblemOfEveryBadFile) {
+  const std::string folder = test::temp_folder("bad");
+  // Missing file, empty file, truncated file.
+  EXPECT_NE(expect_error(folder + "/missing.h5").find("cannot open"), std::string::npos);
+  std::ofstream(folder + "/empty.h5").close();
+  EXPECT_NE(expect_error(folder + "/empty.h5").find("not an HDF5 file"), std::string::npos);
+  const std::string good = folder + "/good.h5";
+  write_mission(sample_mission(), good);
+  const auto size = std::filesystem::file_size(good);
+  std::filesystem::copy_file(good, folder + "/truncated.h5");
+  std::filesystem::resize_file(folder + "/truncated.h5", size / 2);
+  expect_error(folder + "/truncated.h5");
+
+  // A written mission with a broken field: validated before writing, so build the
+  // invalid missions in memory and check validate_mission's messages.
+  const auto invalid = [&](void (*mutate)(Mission&), const char* must_contain) {
+    Mission m = sample_mission();
+    mutate(m);
+    try {
+      validate_mission(m, "m.h5");
+      ADD_FAILURE() << "accepted: " << must_contain;
+    } catch (const FormatError& e) {
+      EXPECT_NE(std::string(e.what()).find(must_contain), std::string::npos) << e.what();
+    }
+  };
+  invalid([](Mission& m) { m.time[10] = m.time[9]; }, "/nav/time: row 10: time does not increase");
+  invalid([](Mission& m) { m.heading[3] = std::nan(""); }, "/nav/attitude heading: row 3: value is NaN");
+  invalid([](Mission& m) { m.vx.pop_back(); }, "/nav/velocity x: expected 3001 rows");
+  invalid([](Mission& m) { m.mark_time[0] = 1e6; }, "/marks/time: row 0");
+  invalid([](Mission& m) { m.mark_side[1] = 0; }, "/marks/side: row 1");
+  invalid([](Mission& m) { m.mark_mine[1] = 4; }, "/marks/mine: row 1");
+  invalid([](Mission& m) { m.mark_range[0] = -2.0; }, "/marks/range: row 0");
+  invalid([](Mission& m) { m.mark_range[0] = 500.0; }, "beyond the sonar");
+  invalid([](Mission& m) { m.gps_latitude[1] = 95.0; }, "/gps/lonlat: row 1");
+  invalid([](Mission& m) { m.depth[7] = std::numeric_limits<double>::infinity(); }, "/nav/depth: row 7: value is infinite");
+  invalid([](Mission& m) { m.model.heading = -1.0; }, "/model: heading");
+}
+
+TEST(MissionFile, ReportsMissingDatasetsWrongShapesAndBadAttributes) {
+  EXPECT_NE(expect_error(edited("del f['/nav/depth']")).find("/nav/depth: missing dataset"), std::string::npos);
+  EXPECT_NE(expect_error(edited("del f['/nav/attitude']\nf['/nav/attitude'] = np.zeros((3001, 2))"))
+                .find("/nav/attitude: expected 3001 x 3, found 3001 x 2"),
+            std::string::npos);
+  EXPECT_NE(expect_error(edited("del f['/nav/altitude']\nf['/nav/altitude'] = np.zeros(10)")).find("/nav/altitude"),
+            std::string::npos);
+  EXPECT_NE(expect_error(edited("f['/nav/time'][5] = np.nan")).find("/nav/time: row 5: time is NaN"), std::string::npos);
+  EXPECT_NE(expect_error(edited("del f['/model'].attrs['heading']")).find("/model: missing attribute heading"),
+            std::string::npos);
+  EXPECT_NE(expect_error(edited("f['/model'].attrs['sonar_side'] = np.bytes_(b'left')")).find("sonar_side"),
+            std::string::npos);
+  EXPECT_NE(expect_error(edited("f.attrs['format'] = np.bytes_(b'other')")).find("not a gesmi mission file"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace gesmi::io

@@ -1,0 +1,198 @@
+// Hostile HDF5 files, edited by Debian's h5py (independent of gesmi's writer): every
+// one is refused with one FormatError naming the file, the object and the reason,
+// before any value reaches a buffer of the wrong size (the sanitizer build runs
+// these too), and a file a user may legitimately produce with h5py is still read.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "io/format_error.h"
+#include "io/files/mission_file.h"
+#include "io/files/result_file.h"
+#include "tests/support/run_command.h"
+
+namespace gesmi::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A short simulated mission and its result, made once by the gesmi binary.
+struct Samples {
+  std::string mission, result;
+};
+const Samples& samples() {
+  static const Samples s = [] {
+    const std::string folder = test::temp_folder("hostile-samples");
+    Samples out{folder + "/m.h5", folder + "/r.h5"};
+    EXPECT_EQ(test::run_gesmi({"simulate", "--seed", "3", "--duration", "600", "-o", out.mission}).exit_code, 0);
+    EXPECT_EQ(test::run_gesmi({"solve", out.mission, "-o", out.result}).exit_code, 0);
+    return out;
+  }();
+  return s;
+}
+
+// A copy of `source` edited by a few lines of h5py ('f' is the open file).
+std::string edited(const std::string& source, const std::string& python_edit) {
+  const std::string folder = test::temp_folder("hostile");
+  const std::string path = folder + "/edited.h5";
+  fs::copy_file(source, path);
+  const std::string script = folder + "/edit.py";
+  std::ofstream(script) << "import h5py, numpy as np, sys\nf = h5py.File(sys.argv[1], 'r+')\n" << python_edit << "\nf.close()\n";
+  EXPECT_EQ(std::system(("/usr/bin/python3 " + script + " " + path).c_str()), 0) << python_edit;
+  return path;
+}
+
+struct Case {
+  const char* edit;
+  const char* must_name;  // part of the one-line message
+};
+
+template <class Read>
+void expect_refused(const std::string& source, const Case& c, Read read) {
+  SCOPED_TRACE(c.edit);
+  const std::string path = edited(source, c.edit);
+  try {
+    read(path);
+    ADD_FAILURE() << "accepted";
+  } catch (const FormatError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(path + ": ", 0), 0u) << what;  // names the file first
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    EXPECT_NE(what.find(c.must_name), std::string::npos) << "wanted '" << c.must_name << "' in: " << what;
+  }
+}
+
+TEST(HostileHdf5, MissionAttributesMustBeOneValueOfTheRightKind) {
+  const Case cases[] = {
+      {"f.attrs['origin_latitude'] = np.array([48.0, 49.0])", "/: attribute origin_latitude holds 2 values, expected one"},
+      {"f.attrs['origin_latitude'] = np.arange(1000.0)", "attribute origin_latitude holds 1000 values"},
+      {"f.attrs['mine_count'] = np.array([1, 2, 3], dtype=np.int64)", "attribute mine_count holds 3 values"},
+      {"f.attrs['format'] = np.array([b'gesmi-mission', b'x'])", "attribute format holds 2 values"},
+      {"f['/model'].attrs['sonar_side'] = np.array([b'starboard', b'port'])", "/model: attribute sonar_side holds 2 values"},
+      {"f['/model'].attrs['heading'] = np.zeros(64)", "/model: attribute heading holds 64 values"},
+      {"f.attrs['mine_count'] = 'three'", "attribute mine_count is a string, expected an integer"},
+      {"f.attrs['mine_count'] = 2.5", "attribute mine_count is a floating-point number, expected an integer"},
+      {"f.attrs['origin_latitude'] = 'north'", "attribute origin_latitude is a string, expected a number"},
+      {"f.attrs['format'] = 7", "attribute format is an integer, expected a string"},
+      {"f.attrs.create('origin_latitude', h5py.Empty('f8'))", "attribute origin_latitude holds 0 values"},
+      {"f.attrs['format_version'] = 7", "format_version 7 was written by a newer gesmi"},
+      {"f.attrs['format_version'] = 0", "format_version 0 is not one this gesmi reads"},
+      {"del f.attrs['format_version']", "missing attribute format_version"},
+      {"f['/model'].attrs['heading'] = np.longdouble(0.01)", "/model: attribute heading is wider than 64 bits"},
+  };
+  for (const Case& c : cases) expect_refused(samples().mission, c, read_mission);
+}
+
+TEST(HostileHdf5, MissionDatasetsAreCheckedBeforeAnythingIsAllocated) {
+  const Case cases[] = {
+      // Declared sizes the file cannot hold: refused before allocating.
+      {"del f['/nav/depth']\nf.create_dataset('/nav/depth', shape=(10**12,), dtype='f8')", "more than gesmi reads from one dataset"},
+      {"del f['/nav/depth']\nf.create_dataset('/nav/depth', shape=(10**8,), dtype='f8')", "but the file stores 0 bytes"},
+      {"del f['/nav/depth']\nf.create_dataset('/nav/depth', shape=(10**8,), dtype='f8', chunks=True, compression='gzip')",
+       "but the file stores"},
+      // Classes.
+      {"d = f['/nav/depth'][:]\ndel f['/nav/depth']\nf['/nav/depth'] = d > 5", "/nav/depth: stores an enumeration"},
+      {"d = f['/nav/depth'][:]\ndel f['/nav/depth']\nf['/nav/depth'] = d.astype(np.longdouble)", "wider than 64 bits"},
+      {"n = f['/nav/depth'].shape[0]\ndel f['/nav/depth']\nf['/nav/depth'] = np.array([b'deep'] * n)", "/nav/depth: stores strings"},
+      {"n = f['/nav/time'].shape[0]\ndel f['/nav/time']\nf['/nav/time'] = np.arange(n, dtype=np.int64) + 2**60",
+       "/nav/time: value 0 is an integer too large to be read exactly"},
+      {"s = f['/marks/side'][:]\ndel f['/marks/side']\nf['/marks/side'] = s.astype(float)", "/marks/side: stores floating-point numbers, expected integers"},
+      {"m = f['/marks/mine'][:]\ndel f['/marks/mine']\nf['/marks/mine'] = m.astype(np.int64) + 2**40", "/marks/mine: value 0 (1099511627"},
+      {"m = f['/marks/mine'][:]\ndel f['/marks/mine']\nf['/marks/mine'] = m > 2", "/marks/mine: stores an enumeration"},
+      {"del f['/nav/time']\nf['/nav/time'] = np.zeros((2, 2, 2))", "/nav/time: expected 1 or 2 dimensions, found 3"},
+      // Groups, datasets and links.
+      {"del f['/marks']\nf['/marks'] = np.zeros(3)", "/marks: expected a group, found a dataset"},
+      {"del f['/gps']\nf['/gps'] = np.zeros(3)", "/gps: expected a group, found a dataset"},
+      {"del f['/model']\nf['/model'] = np.zeros(3)", "/model: expected a group, found a dataset"},
+      {"del f['/nav/depth']\nf.create_group('/nav/depth')", "/nav/depth: expected a dataset, found a group"},
+      {"del f['/gps/time']", "/gps/time: missing dataset"},
+      {"del f['/marks/range']", "/marks/range: missing dataset"},
+      {"del f['/nav/depth']\nf['/nav/depth'] = h5py.SoftLink('/nav/altitude')", "/nav/depth: is a soft or external link"},
+      {"del f['/nav/depth']\nf['/nav/depth'] = h5py.ExternalLink('/etc/passwd', '/x')", "/nav/depth: is a soft or external link"},
+      // Values.
+      {"t = f['/gps/time'][:]\nt[1] = t[0]\nf['/gps/time'][:] = t", "/gps/time: row 1: fix times must increase"},
+      {"f['/truth/position'][3, 1] = np.nan", "/truth/position: row 3: position is NaN"},
+      {"f['/truth/mines'][0, 0] = np.inf", "/truth/mines: row 0: position is infinite"},
+  };
+  for (const Case& c : cases) expect_refused(samples().mission, c, read_mission);
+}
+
+TEST(HostileHdf5, FilesAUserMayWriteWithH5pyAreStillRead) {
+  // Variable-length strings (h5py's default), compressed and chunked datasets,
+  // integers where doubles are expected when doubles hold them exactly.
+  const std::string path = edited(samples().mission,
+                                  "f.attrs['format'] = 'gesmi-mission'\n"
+                                  "f['/model'].attrs['sonar_side'] = 'starboard'\n"
+                                  "d = f['/nav/depth'][:]\ndel f['/nav/depth']\n"
+                                  "f.create_dataset('/nav/depth', data=d, chunks=True, compression='gzip')\n"
+                                  "r = f['/marks/range'][:]\ndel f['/marks/range']\nf['/marks/range'] = np.round(r).astype(np.int64)\n"
+                                  "m = f['/marks/mine'][:]\ndel f['/marks/mine']\nf['/marks/mine'] = m.astype(np.int64)\n");
+  const Mission original = read_mission(samples().mission);
+  const Mission m = read_mission(path);
+  EXPECT_EQ(m.depth, original.depth);
+  EXPECT_EQ(m.mark_mine, original.mark_mine);
+  ASSERT_EQ(m.mark_range.size(), original.mark_range.size());
+  for (std::size_t j = 0; j < m.mark_range.size(); ++j) EXPECT_EQ(m.mark_range[j], std::round(original.mark_range[j]));
+}
+
+TEST(HostileHdf5, EditedResultsAreRefusedNamingWhatDiffers) {
+  const Case cases[] = {
+      {"lo = f['/tube/lower'][:]\nf['/tube/lower'][:] = np.roll(lo, 1, axis=0)", "/tube/lower: contents differ from the SHA-256"},
+      {"u = f['/tube/upper'][:]\nu[100:200] += 50\nf['/tube/upper'][:] = u", "/tube/upper: contents differ"},
+      {"m = f['/mines/lower'][:]\nm[0, 0] = -123456.0\nf['/mines/lower'][:] = m", "/mines/lower: contents differ"},
+      {"lo = f['/tube/lower'][:]\nlo[5] = np.nan\nf['/tube/lower'][:] = lo", "/tube/lower: contents differ"},
+      {"c = f['/marks/candidates'][:]\nc[:] = 1\nf['/marks/candidates'][:] = c", "/marks/candidates: contents differ"},
+      {"del f['/increments/lower'].attrs['sha256']", "/increments/lower: has no sha256 attribute"},
+      {"f.attrs.modify('mark_count', f.attrs['mark_count'] - 1)", "/marks/candidates: expected"},
+      {"f.attrs['sweeps'] = np.int64(999)", "/: attributes or dataset digests differ"},
+      {"f.attrs['inconsistency'] = 'all fine'", "/: attributes or dataset digests differ"},
+      {"f.attrs['bounds_sha256'] = np.array([b'a', b'b'])", "attribute bounds_sha256 holds 2 values"},
+      // Values edited and their dataset digest recomputed the way gesmi computes it:
+      // the root digest, which covers every dataset digest, still tells.
+      {"import hashlib, struct\nname = b'/tube/lower'\nlo = f['/tube/lower'][:] - 1.0\nf['/tube/lower'][:] = lo\n"
+       "h = hashlib.sha256(struct.pack('<Q', len(name)) + name + struct.pack('<QQQ', lo.shape[0], 3, lo.size) + "
+       "lo.astype('<f8').tobytes()).hexdigest()\nf['/tube/lower'].attrs['sha256'] = h",
+       "/: attributes or dataset digests differ"},
+  };
+  for (const Case& c : cases) expect_refused(samples().result, c, [](const std::string& p) { return read_result(p); });
+}
+
+TEST(HostileHdf5, ResultsOfEarlierVersionsAreReadButCheckedValueByValue) {
+  // A result as gesmi 0.1 wrote it: no format_version, no digests.
+  const std::string strip =
+      "del f.attrs['format_version']\ndel f.attrs['sha256']\n"
+      "def drop(name, obj):\n    if isinstance(obj, h5py.Dataset) and 'sha256' in obj.attrs: del obj.attrs['sha256']\n"
+      "f.visititems(drop)\n";
+  const SolveResult old = read_result(edited(samples().result, strip));
+  EXPECT_EQ(old.format_version, 1);
+  const Case cases[] = {
+      {"m = f['/marks/mine'][:]\nm[0] = 9\nf['/marks/mine'][:] = m", "/marks/mine: row 0: mine 9 is not one of the result's"},
+      {"r = f['/marks/range'][:]\nr[1] = -4\nf['/marks/range'][:] = r", "/marks/range: row 1: range must be finite and >= 0"},
+      {"lo = f['/tube/lower'][:]\nlo[7, 0] = 1e9\nf['/tube/lower'][:] = lo", "/tube: row 7: not an interval"},
+      {"lo = f['/tube/lower'][:]\nhi = f['/tube/upper'][:]\nlo[9] = np.nan\nhi[9] = np.nan\nf['/tube/lower'][:] = lo\nf['/tube/upper'][:] = hi",
+       "/tube: a consistent result with an empty domain"},
+      {"o = f['/marks/outlier'][:]\no[0] = 5\nf['/marks/outlier'][:] = o", "/marks/outlier: row 0: expected 0 or 1"},
+      {"f.attrs['mine_count'] = np.int64(65)", "attribute mine_count must be between 0 and 64"},
+  };
+  for (const Case& c : cases)
+    expect_refused(samples().result, {(strip + c.edit).c_str(), c.must_name}, [](const std::string& p) { return read_result(p); });
+}
+
+TEST(HostileHdf5, WarmStartFromAnEditedResultExitsTwoAndWritesNothing) {
+  const std::string shifted = edited(samples().result, "lo = f['/tube/lower'][:]\nf['/tube/lower'][:] = np.roll(lo, 1, axis=0)");
+  const std::string folder = test::temp_folder("hostile-warm");
+  const test::CommandResult r = test::run_gesmi({"solve", samples().mission, "--from", shifted, "-o", folder + "/r2.h5"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(shifted + ": /tube/lower: contents differ"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_empty(folder));
+  // The unedited result still warm-starts.
+  const test::CommandResult ok = test::run_gesmi({"solve", samples().mission, "--from", samples().result, "-o", folder + "/r3.h5"});
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+}
+
+}  // namespace
+}  // namespace gesmi::io

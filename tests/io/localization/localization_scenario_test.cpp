@@ -1,0 +1,136 @@
+// The scenario reader: a valid scenario round-trips; every bad input is one
+// FormatError naming the source, the line and the key.
+
+#include "io/localization/localization_scenario.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <sstream>
+
+#include "io/format_error.h"
+
+namespace gesmi {
+namespace {
+
+const char* kValid = R"(name: tiny
+map:
+  walls:
+    - [0, 0, 4, 0]
+    - [4, 0, 4, 3]
+  landmarks:
+    - [1, 2]
+sensors:
+  - {name: front, type: range, x: 0.2, y: 0, heading_deg: 0, half_aperture_deg: 10, precision: 0.02}
+  - {name: cam, type: bearing, heading_deg: 90, precision_deg: 0.5}
+measurements:
+  - {sensor: front, range: 2.5}
+  - {sensor: cam, bearing_deg: -45}
+prior:
+  boxes:
+    - {x: [0, 4], y: [0, 3], theta_deg: [-180, 180]}
+  halfplanes:
+    - [1, 1, 6]
+solver:
+  epsilon: 0.05
+outliers:
+  policy: minimal
+  extra: 1
+truth: {x: 1, y: 1, theta_deg: 30}
+)";
+
+LocalizationProblem parse(const std::string& text) {
+  std::istringstream in(text);
+  return io::parse_localization_scenario(in, "scene.yaml");
+}
+
+TEST(LocalizationScenario, ReadsEverySection) {
+  const LocalizationProblem p = parse(kValid);
+  EXPECT_EQ(p.name, "tiny");
+  ASSERT_EQ(p.map.walls.size(), 2u);
+  EXPECT_EQ(p.map.walls[1].by, 3.0);
+  ASSERT_EQ(p.range_sensors.size(), 1u);
+  EXPECT_NEAR(p.range_sensors[0].half_aperture, 10 * std::numbers::pi / 180, 1e-15);
+  ASSERT_EQ(p.bearing_sensors.size(), 1u);
+  EXPECT_NEAR(p.bearing_sensors[0].heading, std::numbers::pi / 2, 1e-15);
+  ASSERT_EQ(p.ranges.size(), 1u);
+  ASSERT_EQ(p.bearings.size(), 1u);
+  EXPECT_NEAR(p.bearings[0].bearing, -std::numbers::pi / 4, 1e-15);
+  ASSERT_EQ(p.priors.size(), 1u);
+  EXPECT_NEAR(p.priors[0][2].width(), 2 * std::numbers::pi, 1e-12);
+  ASSERT_EQ(p.constraints.size(), 1u);
+  EXPECT_EQ(p.policy, OutlierPolicy::minimal);
+  EXPECT_EQ(p.extra_outliers, 1);
+  EXPECT_DOUBLE_EQ(p.epsilon, 0.05);
+  ASSERT_TRUE(p.truth);
+  EXPECT_NEAR(p.truth->theta, std::numbers::pi / 6, 1e-15);
+}
+
+struct BadCase {
+  std::string from, to;  // replace `from` in the valid text by `to`
+  std::string key;       // must be named
+  std::string line;      // ":N:" expected, or empty
+};
+
+TEST(LocalizationScenario, BadInputsNameTheFileTheLineAndTheKey) {
+  const BadCase cases[] = {
+      {"half_aperture_deg: 10", "half_aperture_deg: 60", "sensors[0].half_aperture_deg", ":9:"},
+      {"precision: 0.02", "precision: -1", "sensors[0].precision", ":9:"},
+      {"type: bearing", "type: lidar", "sensors[1].type", ":10:"},
+      {"{sensor: cam, bearing_deg: -45}", "{sensor: nose, bearing_deg: -45}", "measurements[1].sensor", ":13:"},
+      {"range: 2.5", "range: -2.5", "measurements[0].range", ":12:"},
+      {"range: 2.5", "range: abc", "measurements[0].range", ":12:"},
+      {"    - [4, 0, 4, 3]", "    - [4, 0, 4]", "map.walls[1]", ":5:"},
+      {"    - [4, 0, 4, 3]", "    - [4, 0, 4, 0]", "map.walls[1]", ":5:"},
+      {"x: [0, 4], y: [0, 3]", "x: [4, 0], y: [0, 3]", "prior.boxes[0].x", ":16:"},
+      {"theta_deg: [-180, 180]", "theta_deg: [-180, 200]", "prior.boxes[0].theta_deg", ":16:"},
+      {"epsilon: 0.05", "epsilon: 0", "solver.epsilon", ":20:"},
+      {"epsilon: 0.05", "epsilonn: 0.05", "solver.epsilonn", ":20:"},
+      {"policy: minimal", "policy: some", "outliers.policy", ":22:"},
+      {"extra: 1", "extra: 9", "outliers.extra", ":23:"},
+      {"truth: {x: 1, y: 1, theta_deg: 30}", "truth: {x: 1, y: 1}", "truth.theta_deg", ":24:"},
+      {"solver:\n  epsilon: 0.05\n", "", "solver", ""},
+      {"  - {name: cam, type: bearing,", "  - {name: front, type: bearing,", "sensors[1].name", ":10:"},
+  };
+  for (const BadCase& c : cases) {
+    std::string text = kValid;
+    const auto at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    text.replace(at, c.from.size(), c.to);
+    try {
+      parse(text);
+      ADD_FAILURE() << "accepted: " << c.to;
+    } catch (const io::FormatError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind("scene.yaml", 0), 0u) << what;
+      EXPECT_NE(what.find(c.key), std::string::npos) << what;
+      if (!c.line.empty()) {
+        EXPECT_NE(what.find(c.line), std::string::npos) << what;
+      }
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+  }
+}
+
+TEST(LocalizationScenario, BrokenYamlIsReportedWithItsLine) {
+  try {
+    parse("map: [\n  walls: {\n");
+    ADD_FAILURE();
+  } catch (const io::FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("scene.yaml:"), std::string::npos) << e.what();
+  }
+}
+
+TEST(LocalizationScenario, MeasurementsBlockRoundTrips) {
+  const LocalizationProblem p = parse(kValid);
+  std::string text = kValid;
+  const auto begin = text.find("measurements:"), end = text.find("prior:");
+  text.replace(begin, end - begin, io::localization_measurements_yaml(p));
+  const LocalizationProblem q = parse(text);
+  ASSERT_EQ(q.ranges.size(), 1u);
+  EXPECT_NEAR(q.ranges[0].range, 2.5, 1e-9);
+  EXPECT_NEAR(q.bearings[0].bearing, p.bearings[0].bearing, 1e-9);
+}
+
+}  // namespace
+}  // namespace gesmi
