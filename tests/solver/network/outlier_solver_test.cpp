@@ -7,20 +7,12 @@
 
 #include <algorithm>
 
-#include "tests/support/tiny_mission.h"
+#include "tests/support/tiny_network.h"
 
 namespace gesmi {
 namespace {
 
-struct Problem {
-  test::TinyMission tiny;
-  MissionNetwork net;
-  TubeDomains sensor;
-  explicit Problem(test::TinyMission t) : tiny(std::move(t)) {
-    net = build_network(tiny.mission, tiny.mission.model, tiny.fixes);
-    sensor = sensor_domains(tiny.mission, tiny.mission.model);
-  }
-};
+using Problem = test::TinyNetwork;
 
 bool has_hypothesis(const OutlierReport& r, std::vector<std::size_t> h) {
   return std::find(r.hypotheses.begin(), r.hypotheses.end(), h) != r.hypotheses.end();

@@ -10,25 +10,12 @@
 
 #include "solver/network/outlier_solver.h"
 #include "solver/network/subsets.h"
-#include "tests/support/tiny_mission.h"
+#include "tests/support/tiny_network.h"
 
 namespace gesmi {
 namespace {
 
-struct Problem {
-  test::TinyMission tiny;
-  MissionNetwork net;
-  TubeDomains sensor;
-  explicit Problem(test::TinyMission t) : tiny(std::move(t)) {
-    net = build_network(tiny.mission, tiny.mission.model, tiny.fixes);
-    sensor = sensor_domains(tiny.mission, tiny.mission.model);
-  }
-  std::vector<std::size_t> all_ids() const {
-    std::vector<std::size_t> ids;
-    for (std::size_t i = 0; i < net.detections.size() + net.anchors.size(); ++i) ids.push_back(i);
-    return ids;
-  }
-};
+using Problem = test::TinyNetwork;
 
 // The oracle: the hull over removal sets of full solves of the network without them.
 bool brute_force_hull(const Problem& p, std::size_t q, TubeDomains& hull) {
