@@ -53,10 +53,13 @@ inline std::int64_t ordinal(double x) {
   const auto bits = std::bit_cast<std::int64_t>(x);
   return bits < 0 ? std::numeric_limits<std::int64_t>::min() - bits : bits;
 }
-inline double ulps(double a, double b) {  // steps from a up to b
+inline double ulps(double a, double b) {  // steps from a up to b (negative when b < a)
   if (a == b) return 0.0;
   if (std::isinf(a) || std::isinf(b)) return kInf;
-  return static_cast<double>(ordinal(b) - ordinal(a));
+  if (b < a) return -ulps(b, a);
+  // Up to 2^64 - 2 steps between the finite doubles: the difference of the ordinals
+  // overflows int64 but is exact in uint64 (modular, and it is non-negative here).
+  return static_cast<double>(static_cast<std::uint64_t>(ordinal(b)) - static_cast<std::uint64_t>(ordinal(a)));
 }
 
 inline std::string str(const Interval& x) {
@@ -81,6 +84,8 @@ struct Tally {
   /// ours must contain the oracle's enclosure of the exact range.
   void check(const Interval& ours, const Mpfi& oracle, const std::string& input) {
     ++cases;
+    // An inverted oracle (left > right) would accept almost any result.
+    if (mpfi_is_empty(oracle.get())) return fail(input + " -> " + str(ours) + ": the oracle gave no enclosure");
     const bool ok = !ours.is_empty() && mpfr_cmp_d(&oracle.get()->left, ours.lo()) >= 0 &&
                     mpfr_cmp_d(&oracle.get()->right, ours.hi()) <= 0;
     if (!ok) return fail(input + " -> " + str(ours) + ", oracle [" + std::to_string(oracle.lo_down()) + ", " +
@@ -111,7 +116,11 @@ struct Tally {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::string widths;
     if (!e.empty()) {
-      const auto text = [](double u) { return std::isinf(u) ? std::string("inf") : std::to_string(static_cast<long long>(u)); };
+      const auto text = [](double u) {  // up to 2^64 ulps: past long long, printed as a double
+        char b[32];
+        std::snprintf(b, sizeof b, "%.0f", u);
+        return std::isinf(u) ? std::string("inf") : std::string(b);
+      };
       widths = ", excess median " + text(e[e.size() / 2]) + " max " + text(e.back()) + " ulps";
     }
     std::printf("oracle %-10s %7d cases, %d failures%s, %.2f s (seed %#llx)\n", name.c_str(), cases, failures,

@@ -180,7 +180,10 @@ std::string list(const Values& values) {
 double ulp_distance(double a, double b) {
   if (a == b) return 0.0;
   if (std::isinf(a) || std::isinf(b)) return kInf;
-  return static_cast<double>(ordinal(b) - ordinal(a));
+  if (b < a) return -ulp_distance(b, a);
+  // Up to 2^64 - 2 steps between the finite doubles: the difference of the ordinals
+  // overflows int64 but is exact in uint64 (modular, and it is non-negative here).
+  return static_cast<double>(static_cast<std::uint64_t>(ordinal(b)) - static_cast<std::uint64_t>(ordinal(a)));
 }
 
 std::string to_string(const Value& value) {

@@ -27,8 +27,8 @@ struct TestResult {
 
 TestResult run(const Test& test);
 
-/// Number of steps between consecutive doubles from a up to b (b >= a); +inf when
-/// they differ and one of them is infinite.
+/// Number of steps between consecutive doubles from a up to b (negative when
+/// b < a); +inf when they differ and one of them is infinite.
 double ulp_distance(double a, double b);
 
 std::string to_string(const Value& value);
