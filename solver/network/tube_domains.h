@@ -19,11 +19,6 @@ struct TubeDomains {
 
   std::size_t size() const { return px.size(); }
   Vec3I position(std::size_t k) const { return Vec3I(px[k], py[k], pz[k]); }
-  void set_position(std::size_t k, const Vec3I& p) {
-    px[k] = p[0];
-    py[k] = p[1];
-    pz[k] = p[2];
-  }
   /// Largest horizontal width of the tube (max over k of the north and east widths).
   double max_horizontal_width() const;
 };
