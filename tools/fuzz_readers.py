@@ -161,11 +161,25 @@ def listing(folder):
     return sorted(os.path.join(root, name) for root, dirs, files in os.walk(folder) for name in dirs + files)
 
 
-def limit_resources(memory_mb):
+def sanitized(binary):
+    """A binary built with AddressSanitizer (tools/sanitizers/check): it reserves
+    terabytes of address space for its shadow memory, so it cannot run under RLIMIT_AS."""
+    with open(binary, "rb") as f:
+        return b"__asan_init" in f.read()
+
+
+def limit_resources(memory_mb, binary):
     """Children inherit these: no core files in the case folders, bounded memory (a
-    reader that trusts a declared 10^12-row dataset must fail, not swap the machine)."""
+    reader that trusts a declared 10^12-row dataset must fail, not swap the machine).
+    Under ASan the bound is its allocator's instead of the address space's."""
     resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
-    if memory_mb > 0:
+    if memory_mb <= 0:
+        return
+    if sanitized(binary):
+        options = os.environ.get("ASAN_OPTIONS", "")
+        os.environ["ASAN_OPTIONS"] = (options + ":" if options else "") + \
+            "max_allocation_size_mb=%d:allocator_may_return_null=1" % memory_mb
+    else:
         resource.setrlimit(resource.RLIMIT_AS, (memory_mb << 20, memory_mb << 20))
 
 
@@ -178,7 +192,7 @@ def fuzz(args):
         inventories = {name: hdf5_mutations.inventory(path) for name, path in seeds.items() if name.endswith(".h5")}
         seed_listing = listing(os.path.join(work, "seeds"))
         cases_dir = os.path.join(work, "cases")
-        limit_resources(args.memory_mb)
+        limit_resources(args.memory_mb, args.gesmi)
         counts = collections.OrderedDict((r.name, collections.Counter()) for r in readers)
         by_class = collections.defaultdict(list)
         accepted = []
@@ -271,7 +285,7 @@ def replay(args):
     failed = 0
     try:
         seeds = targets.make_seeds(args.gesmi, REPO, os.path.join(work, "seeds"))
-        limit_resources(args.memory_mb)
+        limit_resources(args.memory_mb, args.gesmi)
         folders = []
         for root in args.replay:
             folders += sorted(os.path.join(root, d) for d in os.listdir(root) if os.path.isfile(os.path.join(root, d, "case.json")))
