@@ -146,15 +146,20 @@ Mission mission_from_gesmi_txt(GesmiTextLog log, const std::string& name, const 
     m.gps_given_north_halfwidth.push_back(dx[k]);
     m.gps_given_east_halfwidth.push_back(dy[k]);
   };
+  // A row is a fix when its x and y half-widths say something: finite, and narrower
+  // than the local frame's zone (logs write "unknown" as a huge bound, e.g. 1e9).
+  const auto is_fix = [&](std::size_t k) {
+    return std::isfinite(dx[k]) && std::isfinite(dy[k]) && dx[k] < kLocalFrameZone && dy[k] < kLocalFrameZone;
+  };
   if (xy == GesmiXy::fixes) {
     for (std::size_t k = 0; k < n; ++k)
-      if (!std::isnan(dx[k])) add_fix(k);
+      if (is_fix(k)) add_fix(k);
   } else {
     for (std::size_t k = 0; k < n; ++k)
       if (!std::isfinite(x[k]) || !std::isfinite(y[k]))
         fail_at(name, log.line[k], std::string(std::isfinite(x[k]) ? "y" : "x") + ": needed as ground truth, found " +
                                        format_number(std::isfinite(x[k]) ? y[k] : x[k]));
-    if (!std::isnan(dx[0])) add_fix(0);
+    if (is_fix(0)) add_fix(0);
     m.truth_x = x;
     m.truth_y = y;
     m.truth_z = m.depth;

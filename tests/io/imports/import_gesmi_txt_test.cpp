@@ -112,6 +112,14 @@ TEST(GesmiTxt, RowsWithXYHalfWidthsBecomeFixesNorthEastAboutTheOrigin) {
   EXPECT_GE(m.gps_east_halfwidth[1], 2.0 + kLocalFrameError);
 }
 
+TEST(GesmiTxt, RowsWhoseXYBoundIsUnknownAreNotFixes) {
+  // Logs write "unknown" as a huge bound (1e9): such a row says nothing about x, y.
+  Mission m = mission_from_gesmi_txt(read(row(0.0, "100 3 -50 4") + row(0.1, "0 1e9 0 1e9") + row(0.2, "0 20000 0 3") +
+                                          row(0.3, "120 1 -40 2")),
+                                     "log.txt", GeoOrigin{48.2, -4.4}, SensorModel{}, GesmiXy::fixes);
+  EXPECT_EQ(m.gps_time, (std::vector<double>{0.0, 0.3}));
+}
+
 TEST(GesmiTxt, TruthReadingTakesXYAndDepthAsTheTrajectoryLikeCodac) {
   Mission m = mission_from_gesmi_txt(read(row(0.0, "0.06 0 0 0") + row(0.1, "0.2 inf 0.1 inf")), "log.txt",
                                      kRedermorStartFix, SensorModel{}, GesmiXy::truth);
