@@ -25,7 +25,10 @@ std::string bounds_digest(const SensorModel& model) {
     h.add(f.key);
     h.add(model.*f.member);
   }
-  h.add(static_cast<double>(static_cast<int>(model.sonar_side)));
+  for (const SensorModelChoice& c : sensor_model_choices()) {
+    h.add(c.key);
+    h.add(c.get(model));
+  }
   return h.hex();
 }
 

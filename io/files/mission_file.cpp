@@ -6,17 +6,18 @@
 #include "io/imports/csv_number.h"
 #include "io/format_error.h"
 #include "io/geodesy.h"
+#include "io/files/model_attributes.h"
 #include "io/hdf5/h5_file.h"
 #include "io/hdf5/h5_format.h"
 #include "io/imports/mark_rules.h"
-#include "io/sonar_side.h"
 #include "solver/network/mission_network.h"
 
 namespace gesmi::io {
 namespace {
 
 constexpr const char* kFormat = "gesmi-mission";
-constexpr H5FormatVersions kVersions{.current = 1, .oldest = 1, .when_absent = 0};
+// 2: the sensor model gained max_jerk and step_model (version-1 files take their defaults).
+constexpr H5FormatVersions kVersions{.current = 2, .oldest = 1, .when_absent = 0};
 
 std::string half_width_dataset(const NavChannel& c) { return "/nav/half_widths/" + std::string(c.name); }
 
@@ -137,7 +138,7 @@ void validate_mission(const Mission& m, const std::string& source) {
 Mission read_mission(const std::string& path) {
   const H5File f = H5File::open_read(path);
   Mission m;
-  check_format(f, kFormat, "gesmi mission", kVersions);
+  const std::int64_t version = check_format(f, kFormat, "gesmi mission", kVersions);
   const auto required_double = [&](const std::string& object, const std::string& name) {
     const auto v = f.double_attribute(object, name);
     if (!v) throw FormatError(path + ": " + object + ": missing attribute " + name);
@@ -150,11 +151,7 @@ Mission read_mission(const std::string& path) {
   if (*mines < 0 || *mines > kMaxMines)
     throw FormatError(path + ": /: mine_count must be between 0 and " + std::to_string(kMaxMines));
   m.mine_count = static_cast<int>(*mines);
-  if (!f.has_group("/model")) throw FormatError(path + ": /model: missing group (the sensor model)");
-  for (const SensorModelField& field : sensor_model_fields()) m.model.*field.member = required_double("/model", std::string(field.key));
-  const auto side = f.string_attribute("/model", "sonar_side");
-  if (!side) throw FormatError(path + ": /model: missing attribute sonar_side");
-  m.model.sonar_side = parse_sonar_side(*side, path + ": /model: sonar_side");
+  m.model = read_model_attributes(f, "/model", version);
 
   // Navigation, read column by column into the flat arrays (one copy of the data).
   m.time = f.read_doubles("/nav/time", 1);
@@ -278,9 +275,7 @@ void write_mission(const Mission& m, const std::string& path) {
     f.set_attribute("/", "origin_latitude", m.origin.latitude);
     f.set_attribute("/", "origin_longitude", m.origin.longitude);
     f.set_attribute("/", "mine_count", static_cast<std::int64_t>(m.mine_count));
-    f.create_group("/model");
-    for (const SensorModelField& field : sensor_model_fields()) f.set_attribute("/model", std::string(field.key), m.model.*field.member);
-    f.set_attribute("/model", "sonar_side", std::string(sonar_side_name(m.model.sonar_side)));
+    write_model_attributes(f, "/model", m.model);
     f.close();
   }
   out.commit();

@@ -6,6 +6,7 @@
 #include "io/output/atomic_output.h"
 #include "io/imports/csv_number.h"
 #include "io/format_error.h"
+#include "io/files/model_attributes.h"
 #include "io/hdf5/h5_digest.h"
 #include "io/hdf5/h5_file.h"
 #include "io/hdf5/h5_format.h"
@@ -27,7 +28,8 @@ const char* const kDatasets[] = {"/time",          "/tube/lower",       "/tube/u
 // The root attributes the root digest covers (timings are informative and left out).
 std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& r) {
   const MissionSolution& s = r.solution;
-  return {{"status", s.report.consistent ? "consistent" : "inconsistent"},
+  std::vector<std::pair<std::string, std::string>> fields = {
+          {"status", s.report.consistent ? "consistent" : "inconsistent"},
           {"mode", solve_mode_name(s.report.mode)},
           {"inconsistency", s.report.message},
           {"sweeps", std::to_string(s.report.sweeps)},
@@ -39,6 +41,12 @@ std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& 
           {"marks_sha256", r.marks_digest},
           {"mark_count", std::to_string(s.mark_count())},
           {"gesmi_version", r.version}};
+  // The /model attributes, exactly (shortest round-trip text).
+  for (const SensorModelField& f : sensor_model_fields())
+    fields.emplace_back("/model/" + std::string(f.key), format_number(s.model.*f.member));
+  for (const SensorModelChoice& c : sensor_model_choices())
+    fields.emplace_back("/model/" + std::string(c.key), std::string(c.get(s.model)));
+  return fields;
 }
 
 SolveMode mode_named(const std::string& name) {
@@ -128,6 +136,7 @@ void write_result(const SolveResult& r, const std::string& path) {
     write_digested(f, "/marks/side", s.mark_side, s.mark_side.size());
     write_digested(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size());
     write_format(f, kFormat, kVersions);
+    write_model_attributes(f, "/model", s.model);
     const std::vector<std::pair<std::string, std::string>> fields = root_fields(r);
     f.set_attribute("/", "status", std::string(s.report.consistent ? "consistent" : "inconsistent"));
     f.set_attribute("/", "mode", std::string(solve_mode_name(s.report.mode)));
@@ -180,6 +189,7 @@ SolveResult read_result(const std::string& path, bool with_waterfall) {
   const std::int64_t mark_count = integer("mark_count", 0, static_cast<std::int64_t>(kMaxDatasetValues));
   r.version = text("gesmi_version");
   if (verified) {
+    s.model = read_model_attributes(f, "/model", 2);
     const std::string mode = text("mode");
     s.report.mode = mode_named(mode);
     if (mode != solve_mode_name(s.report.mode)) bad(f, "/", "attribute mode is not one gesmi writes");

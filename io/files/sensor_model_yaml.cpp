@@ -5,7 +5,6 @@
 
 #include "io/format_error.h"
 #include "io/text/message_text.h"
-#include "io/sonar_side.h"
 #include "io/text/strict_yaml.h"
 
 namespace gesmi::io {
@@ -20,12 +19,16 @@ void merge_sensor_model_yaml(const std::string& path, SensorModel& model) {
     const SensorModelField* field = nullptr;
     for (const SensorModelField& f : sensor_model_fields())
       if (f.key == key) field = &f;
-    if (!field && key != "sonar_side")
+    const SensorModelChoice* choice = nullptr;
+    for (const SensorModelChoice& c : sensor_model_choices())
+      if (c.key == key) choice = &c;
+    if (!field && !choice)
       throw FormatError(line + ": unknown key " + quoted_input(key) + " (docs/formats.md lists the sensor model keys)");
     const std::string where = line + ": " + key;
-    if (!field) {
-      if (!entry.second.IsScalar()) throw FormatError(where + ": expected starboard, port or both");
-      updated.sonar_side = parse_sonar_side(entry.second.Scalar(), where);
+    if (choice) {
+      if (!entry.second.IsScalar() || !choice->set(updated, entry.second.Scalar()))
+        throw FormatError(where + ": expected " + choice_names(*choice) +
+                          (entry.second.IsScalar() ? ", found " + quoted_input(entry.second.Scalar()) : std::string()));
       continue;
     }
     double value = 0.0;
@@ -49,7 +52,8 @@ std::string sensor_model_yaml(const SensorModel& model) {
   out << "# gesmi sensor error model (docs/formats.md)\n";
   for (const SensorModelField& f : sensor_model_fields())
     out << f.key << ": " << model.*f.member << "  # " << f.unit << ", " << f.meaning << "\n";
-  out << "sonar_side: " << sonar_side_name(model.sonar_side) << "  # starboard, port or both\n";
+  for (const SensorModelChoice& c : sensor_model_choices())
+    out << c.key << ": " << c.get(model) << "  # " << choice_names(c) << "\n";
   return out.str();
 }
 

@@ -23,8 +23,68 @@ const std::vector<SensorModelField>& sensor_model_fields() {
       {"along_track_tolerance", &SensorModel::along_track_tolerance, "m", "|along-track offset| of a marked mine from the sonar plane"},
       {"max_attitude_rate", &SensorModel::max_attitude_rate, "rad/s", "bound on roll, pitch and heading rates between samples"},
       {"max_acceleration", &SensorModel::max_acceleration, "m/s²", "bound on the rate of each DVL component between samples"},
+      {"max_jerk", &SensorModel::max_jerk, "m/s³", "bound on the second derivative of the world velocity within a step (trapezoid step model)", 2},
   };
   return fields;
+}
+
+namespace {
+
+template <class Enum>
+struct Named {
+  std::string_view name;
+  Enum value;
+};
+
+constexpr Named<SonarSide> kSides[] = {{"starboard", SonarSide::starboard}, {"port", SonarSide::port}, {"both", SonarSide::both}};
+constexpr Named<StepModel> kStepModels[] = {
+    {"trapezoid", StepModel::trapezoid}, {"rate-hull", StepModel::rate_hull}, {"sample", StepModel::sample}};
+
+template <class Enum, std::size_t n>
+std::string_view name_of(const Named<Enum> (&table)[n], Enum value) {
+  for (const auto& entry : table)
+    if (entry.value == value) return entry.name;
+  return table[0].name;
+}
+
+template <class Enum, std::size_t n>
+bool value_of(const Named<Enum> (&table)[n], std::string_view name, Enum& value) {
+  for (const auto& entry : table)
+    if (entry.name == name) {
+      value = entry.value;
+      return true;
+    }
+  return false;
+}
+
+template <class Enum, std::size_t n>
+std::vector<std::string_view> names_of(const Named<Enum> (&table)[n]) {
+  std::vector<std::string_view> names;
+  for (const auto& entry : table) names.push_back(entry.name);
+  return names;
+}
+
+}  // namespace
+
+const std::vector<SensorModelChoice>& sensor_model_choices() {
+  static const std::vector<SensorModelChoice> choices = {
+      {"sonar_side", names_of(kSides), "the side-scan sonar's side(s)", 1,
+       [](const SensorModel& m) { return name_of(kSides, m.sonar_side); },
+       [](SensorModel& m, std::string_view name) { return value_of(kSides, name, m.sonar_side); }},
+      {"step_model", names_of(kStepModels),
+       "how a step's displacement is enclosed: trapezoid (sound for boxes at the sample instants), rate-hull, "
+       "or sample (the paper's convention: sound only for boxes valid over the whole step)",
+       2, [](const SensorModel& m) { return name_of(kStepModels, m.step_model); },
+       [](SensorModel& m, std::string_view name) { return value_of(kStepModels, name, m.step_model); }},
+  };
+  return choices;
+}
+
+std::string choice_names(const SensorModelChoice& choice) {
+  std::string text;
+  for (std::size_t i = 0; i < choice.names.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == choice.names.size() ? " or " : ", ") + std::string(choice.names[i]);
+  return text;
 }
 
 std::string SensorModel::validate() const {

@@ -11,6 +11,17 @@ namespace gesmi {
 
 enum class SonarSide : int { port = -1, both = 0, starboard = 1 };
 
+/// How a step's displacement p(k+1) - p(k) = integral of R v is enclosed (docs/model.md,
+/// "Boxes over a step"):
+///  - trapezoid: dt/2 ([R v]_k + [R v]_k+1) + dt^3/12 [-J, J] from the boxes at the two
+///    samples alone, J = max_jerk bounding the second derivative of R v; intersected
+///    with rate_hull, so never wider. Sound when the boxes hold at the sample instants.
+///  - rate_hull: dt times R v over the hull of both samples' boxes widened by the
+///    rates' excursion (max_attitude_rate, max_acceleration).
+///  - sample: dt [R v]_k, the paper's convention: sound only when the box of sample k
+///    holds over the whole step, which a sensor's datasheet does not promise.
+enum class StepModel { trapezoid, rate_hull, sample };
+
 struct SensorModel {
   // DVL body-frame speed, per component: true value in v ± (dvl_relative·|v| + dvl_absolute).
   double dvl_relative = 0.004;
@@ -42,21 +53,41 @@ struct SensorModel {
   // box valid over a whole step (docs/model.md): the simulator honours them.
   double max_attitude_rate = 0.05;  // rad/s, roll, pitch and heading
   double max_acceleration = 0.2;    // m/s², each DVL component
+  // Bound on |d²(R v)/dt²| (the jerk of the position) within a step, for the
+  // trapezoid step model (docs/model.md justifies 1 m/s³).
+  double max_jerk = 1.0;            // m/s³
+  StepModel step_model = StepModel::trapezoid;
 
   /// Empty when every bound is finite and non-negative; otherwise the reason.
   std::string validate() const;
 };
 
 /// One numeric field of the sensor model: its key (the HDF5 /model attribute, the YAML
-/// key, the docs/formats.md row), the member, its unit and meaning.
+/// key, the docs/formats.md row), the member, its unit and meaning, and the mission
+/// file version that introduced it (older files take the default).
 struct SensorModelField {
   std::string_view key;
   double SensorModel::*member;
   std::string_view unit, meaning;
+  int since_version = 1;
 };
 
-/// Every numeric field of SensorModel (the sonar side is apart): the one list that
-/// files, validation, digests and docs derive from.
+/// Every numeric field of SensorModel: the one list that files, validation, digests
+/// and docs derive from.
 const std::vector<SensorModelField>& sensor_model_fields();
+
+/// A field of the sensor model chosen by name (sonar_side, step_model): a string in
+/// files. names()[0] is its default.
+struct SensorModelChoice {
+  std::string_view key;
+  std::vector<std::string_view> names;
+  std::string_view meaning;
+  int since_version = 1;
+  std::string_view (*get)(const SensorModel&);
+  bool (*set)(SensorModel&, std::string_view name);  // false when `name` is not one of names
+};
+const std::vector<SensorModelChoice>& sensor_model_choices();
+/// "starboard, port or both": the names, for messages.
+std::string choice_names(const SensorModelChoice& choice);
 
 }  // namespace gesmi

@@ -67,8 +67,8 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
       plane.attitude = make_attitude(boxes.roll(d.at.k), boxes.pitch(d.at.k), boxes.heading(d.at.k));
       plane.altitude = boxes.altitude(d.at.k);
     } else {
-      plane.attitude = boxes.step_attitude(d.at.k);
-      plane.altitude = boxes.step_altitude(d.at.k);
+      plane.attitude = boxes.attitude_between(d.at.k);
+      plane.altitude = boxes.altitude_between(d.at.k);
     }
     plane.along_tolerance = model.along_track_tolerance;
     plane.depth_band = model.mine_depth_band;

@@ -56,8 +56,13 @@ Interval SensorBoxes::widen(const Interval& a, const Interval& b, double excursi
 }
 
 SensorBoxes::SampleBoxes SensorBoxes::sample(std::size_t k) const {
-  return {roll(k), pitch(k), heading(k), velocity(k)};
+  SampleBoxes s{roll(k), pitch(k), heading(k), velocity(k), {}};
+  if (model_.step_model != StepModel::rate_hull)
+    s.world_velocity = body_to_world(make_attitude(s.roll, s.pitch, s.heading), s.velocity);
+  return s;
 }
+
+Interval SensorBoxes::step_duration(std::size_t k) const { return Interval(m_.time[k + 1]) - Interval(m_.time[k]); }
 
 Attitude<Interval> SensorBoxes::step_attitude(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const {
   const double e = excursion(model_.max_attitude_rate, k);
@@ -75,12 +80,76 @@ Vec3I SensorBoxes::step_velocity(const SampleBoxes& a, const SampleBoxes& b, std
                widen(a.velocity[2], b.velocity[2], e));
 }
 
-Vec3I SensorBoxes::step_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const {
+Vec3I SensorBoxes::rate_hull_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const {
   // Mean value theorem for integrals: the integral over [t_k, t_k+1] of a function
   // whose values stay in the (convex) box B is in (t_k+1 - t_k) B.
-  const Interval dt = Interval(m_.time[k + 1]) - Interval(m_.time[k]);
+  const Interval dt = step_duration(k);
   const Vec3I w = body_to_world(step_attitude(a, b, k), step_velocity(a, b, k));
   return Vec3I(dt * w[0], dt * w[1], dt * w[2]);
+}
+
+Vec3I SensorBoxes::step_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const {
+  const Interval dt = step_duration(k);
+  switch (model_.step_model) {
+    case StepModel::rate_hull:
+      return rate_hull_increment(a, b, k);
+    case StepModel::sample:
+      return Vec3I(dt * a.world_velocity[0], dt * a.world_velocity[1], dt * a.world_velocity[2]);
+    case StepModel::trapezoid:
+      break;
+  }
+  // Trapezoid rule with its remainder, per component: the integral of w over the step
+  // is dt/2 (w(t_k) + w(t_k+1)) - dt^3/12 w''(xi), with w(t_k) in sample k's box R v
+  // and |w''| <= J. Intersected with the rate hull, so never wider than it.
+  const Interval half = dt / Interval(2.0);
+  const Interval remainder = Interval(-1.0, 1.0) * (pow(dt, 3) / Interval(12.0)) * Interval(model_.max_jerk);
+  const Vec3I hull = rate_hull_increment(a, b, k);
+  Vec3I d;
+  for (int i = 0; i < 3; ++i) d[i] = intersect(half * (a.world_velocity[i] + b.world_velocity[i]) + remainder, hull[i]);
+  return d;
+}
+
+void SensorBoxes::offsets_between(std::size_t k, const Interval& alpha, const Interval& beta, Vec3I& forward,
+                                  Vec3I& backward) const {
+  const SampleBoxes a = sample(k), b = sample(k + 1);
+  const Vec3I v = body_to_world(step_attitude(a, b, k), step_velocity(a, b, k));  // over the whole step
+  for (int i = 0; i < 3; ++i) {
+    forward[i] = alpha * v[i];
+    backward[i] = beta * v[i];
+  }
+  if (model_.step_model == StepModel::rate_hull) return;
+  if (model_.step_model == StepModel::sample) {
+    for (int i = 0; i < 3; ++i) {
+      forward[i] = alpha * a.world_velocity[i];
+      backward[i] = beta * a.world_velocity[i];
+    }
+    return;
+  }
+  // w is the linear interpolation between the samples plus an error e(s) with
+  // |e(s)| <= J s (dt - s) / 2, whose integral over [0, a] is at most
+  // J (dt a^2 / 4 - a^3 / 6). So p(t) - p(k) lies in
+  // a (1 - a / (2 dt)) w_k + a^2 / (2 dt) w_k+1 ± J (dt a^2 / 4 - a^3 / 6),
+  // and p(k+1) - p(t) in the same with beta and the samples swapped.
+  const Interval dt = step_duration(k), two_dt = Interval(2.0) * dt, jerk(model_.max_jerk);
+  const auto partial = [&](const Interval& x, const Vec3I& near, const Vec3I& far, const Vec3I& rate_bound, Vec3I& out) {
+    const Interval near_weight = x * (Interval(1.0) - x / two_dt);
+    const Interval far_weight = sqr(x) / two_dt;
+    const Interval error = jerk * (dt * sqr(x) / Interval(4.0) - pow(x, 3) / Interval(6.0));
+    const Interval spread = Interval(-1.0, 1.0) * Interval(0.0, error.hi());
+    for (int i = 0; i < 3; ++i) out[i] = intersect(near_weight * near[i] + far_weight * far[i] + spread, rate_bound[i]);
+  };
+  partial(alpha, a.world_velocity, b.world_velocity, forward, forward);
+  partial(beta, b.world_velocity, a.world_velocity, backward, backward);
+}
+
+Attitude<Interval> SensorBoxes::attitude_between(std::size_t k) const {
+  if (model_.step_model == StepModel::sample) return make_attitude(roll(k), pitch(k), heading(k));
+  return step_attitude(k);
+}
+
+Interval SensorBoxes::altitude_between(std::size_t k) const {
+  if (model_.step_model == StepModel::sample) return altitude(k);
+  return step_altitude(k);
 }
 
 Attitude<Interval> SensorBoxes::step_attitude(std::size_t k) const { return step_attitude(sample(k), sample(k + 1), k); }

@@ -3,7 +3,8 @@
 // at a sample, the reading ± its bound (the mission's per-sample half-width when
 // it gives one, the model's bound otherwise); over a step [t_k, t_k+1], the hull
 // of the boxes at both ends widened by rate_bound · dt / 2, the largest excursion
-// of a quantity whose rate is bounded (docs/model.md).
+// of a quantity whose rate is bounded. The displacement over a step, and to a time
+// between two samples, follows the model's StepModel (docs/model.md).
 
 #include <cstddef>
 
@@ -32,20 +33,32 @@ class SensorBoxes {
   Attitude<Interval> step_attitude(std::size_t k) const;
   Vec3I step_velocity(std::size_t k) const;
   Interval step_altitude(std::size_t k) const;
-  /// Enclosure of the world-frame velocity R v over the step.
+  /// Enclosure of the world-frame velocity R v over the step (bounded rates).
   Vec3I step_world_velocity(std::size_t k) const;
-  /// Enclosure of the displacement p(k+1) - p(k) = integral of R v over the step.
+  /// Enclosure of the displacement p(k+1) - p(k) = integral of R v over the step,
+  /// under the model's step model.
   Vec3I step_increment(std::size_t k) const;
+  /// Enclosures of p(t) - p(k) (forward) and p(k+1) - p(t) (backward) for t between
+  /// t_k and t_k+1, alpha = t - t_k and beta = t_k+1 - t, under the step model.
+  void offsets_between(std::size_t k, const Interval& alpha, const Interval& beta, Vec3I& forward,
+                       Vec3I& backward) const;
+  /// The attitude and altitude at a time between t_k and t_k+1 (the step's boxes; the
+  /// sample model takes sample k's).
+  Attitude<Interval> attitude_between(std::size_t k) const;
+  Interval altitude_between(std::size_t k) const;
 
   /// The boxes of one sample, so that a sweep over the steps builds each once.
   struct SampleBoxes {
     Interval roll, pitch, heading;
     Vec3I velocity;
+    Vec3I world_velocity;  // R v from this sample's boxes alone (trapezoid and sample models)
   };
   SampleBoxes sample(std::size_t k) const;
   Attitude<Interval> step_attitude(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
   Vec3I step_velocity(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
   Vec3I step_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
+  /// dt times R v over the step's rate-bounded boxes: the rate_hull model.
+  Vec3I rate_hull_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
 
   const SensorModel& model() const { return model_; }
 
@@ -55,6 +68,7 @@ class SensorBoxes {
   Interval widen_over_step(const Interval& a, const Interval& b, double rate, std::size_t k) const;
   /// rate * dt / 2 over step k, rounded up.
   double excursion(double rate, std::size_t k) const;
+  Interval step_duration(std::size_t k) const;
   static Interval widen(const Interval& a, const Interval& b, double excursion);
 
   const Mission& m_;

@@ -17,16 +17,15 @@ TimeLocation TimeLocation::locate(std::span<const double> time, double t, const 
   // time[k - 1] < t < time[k]
   at.k = k - 1;
   at.on_grid = false;
-  at.alpha = Interval(t) - Interval(time[k - 1]);
-  at.beta = Interval(time[k]) - Interval(t);
-  at.velocity = boxes.step_world_velocity(k - 1);
+  const Interval alpha = Interval(t) - Interval(time[k - 1]), beta = Interval(time[k]) - Interval(t);
+  boxes.offsets_between(k - 1, alpha, beta, at.forward, at.backward);
   return at;
 }
 
 Vec3I TimeLocation::position(const TubeDomains& d) const {
   if (on_grid) return d.position(k);
   Vec3I q;
-  for (int i = 0; i < 3; ++i) q[i] = intersect(d.position(k)[i] + alpha * velocity[i], d.position(k + 1)[i] - beta * velocity[i]);
+  for (int i = 0; i < 3; ++i) q[i] = intersect(d.position(k)[i] + forward[i], d.position(k + 1)[i] - backward[i]);
   return q;
 }
 
@@ -37,8 +36,8 @@ bool TimeLocation::narrow(TubeDomains& d, const Vec3I& q) const {
     if (on_grid) {
       if (!p[k].intersect_with(q[i])) return false;
     } else {
-      if (!p[k].intersect_with(q[i] - alpha * velocity[i])) return false;
-      if (!p[k + 1].intersect_with(q[i] + beta * velocity[i])) return false;
+      if (!p[k].intersect_with(q[i] - forward[i])) return false;
+      if (!p[k + 1].intersect_with(q[i] + backward[i])) return false;
     }
   }
   return true;

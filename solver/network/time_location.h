@@ -1,8 +1,9 @@
 #pragma once
 // Where a time t (a GPS fix, a sonar mark) falls on the mission's sample grid.
 // On a sample, the position there is p(k). Between t_k and t_k+1 it is a point
-// q = p(t) with q in p(k) + alpha V and q in p(k+1) - beta V, where alpha = t - t_k,
-// beta = t_k+1 - t and V encloses the world velocity over the step.
+// q = p(t) with q in p(k) + F and q in p(k+1) - B, where F and B enclose the
+// displacements from t_k to t and from t to t_k+1 under the step model
+// (SensorBoxes::offsets_between).
 
 #include <cstddef>
 #include <span>
@@ -17,8 +18,7 @@ class SensorBoxes;
 struct TimeLocation {
   std::size_t k = 0;
   bool on_grid = true;
-  Interval alpha, beta;  // t - t_k and t_k+1 - t (off grid)
-  Vec3I velocity;        // world velocity over step k (off grid)
+  Vec3I forward, backward;  // p(t) - p(k) and p(k+1) - p(t) (off grid)
 
   /// t must lie within [time.front(), time.back()].
   static TimeLocation locate(std::span<const double> time, double t, const SensorBoxes& boxes);

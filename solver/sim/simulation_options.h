@@ -3,10 +3,18 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace gesmi {
 
-enum class SimulatedErrors { uniform, worst_case };
+/// uniform: errors drawn in the bounds; worst_case: a bias at 99 % of the bound, one
+/// sign per sensor; at_samples: at 99 % of the bound against the motion of the step
+/// that follows, so that a sample's box holds at its instant but not over the step
+/// (what the paper's step convention assumes away; docs/model.md).
+enum class SimulatedErrors { uniform, worst_case, at_samples };
+/// "uniform", "worst-case", "at-samples"; parse returns false for another name.
+const char* simulated_errors_name(SimulatedErrors errors);
+bool parse_simulated_errors(std::string_view name, SimulatedErrors& errors);
 
 struct SimulationOptions {
   std::uint64_t seed = 1;

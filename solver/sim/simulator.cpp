@@ -24,16 +24,18 @@ double true_roll(double t) { return 0.02 * std::sin(kTwoPi * t / 23.0); }
 double true_sway(double t) { return 0.04 * std::sin(kTwoPi * t / 37.0); }
 double true_heave(double t) { return 0.02 * std::sin(kTwoPi * t / 53.0); }
 
-// Reading errors strictly inside their bounds: uniform, or a bias at 99 % of the
-// bound with a sign fixed per sensor (worst case).
+// Reading errors strictly inside their bounds: uniform, a bias at 99 % of the
+// bound with a sign fixed per sensor (worst case), or at 99 % of the bound against
+// `change`, how the true value moves over the coming step (at samples).
 class Errors {
  public:
   enum Sensor { roll, pitch, heading, vx, vy, vz, depth, altitude, gps_north, gps_east, mark, count };
   Errors(RandomSource& rng, SimulatedErrors mode) : rng_(rng), mode_(mode) {
     for (double& s : signs_) s = rng_.sign();
   }
-  double operator()(Sensor sensor, double bound) {
+  double operator()(Sensor sensor, double bound, double change = 0.0) {
     if (mode_ == SimulatedErrors::worst_case) return 0.99 * bound * signs_[sensor];
+    if (mode_ == SimulatedErrors::at_samples && change != 0.0) return -0.99 * bound * (change > 0.0 ? 1.0 : -1.0);
     return 0.99 * bound * rng_.uniform(-1.0, 1.0);
   }
 
@@ -78,7 +80,10 @@ class Pilot {
   Pilot(const std::vector<Waypoint>& plan, double mean_speed) : plan_(plan), mean_speed_(mean_speed) {}
   bool arrived() const { return target_ >= plan_.size(); }
 
-  void step(TruthState& s, double t, double dt) {
+  struct Rates {
+    double turn = 0.0, pitch = 0.0, speed = 0.0;
+  };
+  Rates step(TruthState& s, double t, double dt) {
     // Next waypoint when close, or once past the line through it across the leg (a
     // waypoint inside the turning circle would otherwise be circled for ever).
     if (target_ < plan_.size()) {
@@ -104,6 +109,7 @@ class Pilot {
     s.heading += turn * dt;
     s.pitch += pitch_rate * dt;
     s.speed += speed_rate * dt;
+    return {turn, pitch_rate, speed_rate};
   }
 
  private:
@@ -134,6 +140,24 @@ double calibrated_speed(const std::vector<Waypoint>& plan, double path_length, d
 }
 
 }  // namespace
+
+const char* simulated_errors_name(SimulatedErrors errors) {
+  switch (errors) {
+    case SimulatedErrors::uniform: return "uniform";
+    case SimulatedErrors::worst_case: return "worst-case";
+    case SimulatedErrors::at_samples: return "at-samples";
+  }
+  return "uniform";
+}
+
+bool parse_simulated_errors(std::string_view name, SimulatedErrors& errors) {
+  for (const SimulatedErrors e : {SimulatedErrors::uniform, SimulatedErrors::worst_case, SimulatedErrors::at_samples})
+    if (name == simulated_errors_name(e)) {
+      errors = e;
+      return true;
+    }
+  return false;
+}
 
 std::string SimulationOptions::validate() const {
   if (!(duration > 0.0) || !std::isfinite(duration)) return "duration must be a positive number of seconds";
@@ -182,27 +206,33 @@ Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
     m.truth_x[k] = s.p[0];
     m.truth_y[k] = s.p[1];
     m.truth_z[k] = s.p[2];
+    const TruthState at_sample = s;
+    // The step that follows (its rates orient the at-samples errors).
+    const Pilot::Rates rates = k + 1 < n ? pilot.step(s, t, dt) : Pilot::Rates{};
     const double roll = true_roll(t);
-    const Vec3d v_body(s.speed, true_sway(t), true_heave(t));
+    const Vec3d v_body(at_sample.speed, true_sway(t), true_heave(t));
     // Readings.
-    m.roll[k] = roll + error(Errors::roll, model.roll);
-    m.pitch[k] = s.pitch + error(Errors::pitch, model.pitch);
-    m.heading[k] = wrap(s.heading + error(Errors::heading, model.heading));
-    const auto dvl = [&](Errors::Sensor sensor, double v) {
+    m.roll[k] = roll + error(Errors::roll, model.roll, true_roll(t + dt) - roll);
+    m.pitch[k] = at_sample.pitch + error(Errors::pitch, model.pitch, rates.pitch);
+    m.heading[k] = wrap(at_sample.heading + error(Errors::heading, model.heading, rates.turn));
+    const auto dvl = [&](Errors::Sensor sensor, double v, double change) {
       // |error| <= (a|v| + b) / (1 + a) keeps v inside reading ± (a|reading| + b).
-      return v + error(sensor, (model.dvl_relative * std::fabs(v) + model.dvl_absolute) / (1.0 + model.dvl_relative));
+      return v + error(sensor, (model.dvl_relative * std::fabs(v) + model.dvl_absolute) / (1.0 + model.dvl_relative), change);
     };
-    m.vx[k] = dvl(Errors::vx, v_body[0]);
-    m.vy[k] = dvl(Errors::vy, v_body[1]);
-    m.vz[k] = dvl(Errors::vz, v_body[2]);
-    m.depth[k] = s.p[2] + error(Errors::depth, (model.depth_absolute + model.depth_relative * std::fabs(s.p[2])) /
-                                                   (1.0 + model.depth_relative));
-    m.altitude[k] = sea_floor_depth(s.p[0], s.p[1]) - s.p[2] + error(Errors::altitude, model.altitude);
+    m.vx[k] = dvl(Errors::vx, v_body[0], rates.speed);
+    m.vy[k] = dvl(Errors::vy, v_body[1], true_sway(t + dt) - v_body[1]);
+    m.vz[k] = dvl(Errors::vz, v_body[2], true_heave(t + dt) - v_body[2]);
+    m.depth[k] = at_sample.p[2] + error(Errors::depth, (model.depth_absolute + model.depth_relative * std::fabs(at_sample.p[2])) /
+                                                           (1.0 + model.depth_relative),
+                                        s.p[2] - at_sample.p[2]);
+    const double altitude = sea_floor_depth(at_sample.p[0], at_sample.p[1]) - at_sample.p[2];
+    m.altitude[k] = altitude + error(Errors::altitude, model.altitude,
+                                     sea_floor_depth(s.p[0], s.p[1]) - s.p[2] - altitude);
 
     // Sonar plane crossings (starboard, below, within range).
-    const Attitude<double> att = make_attitude(roll, s.pitch, s.heading);
+    const Attitude<double> att = make_attitude(roll, at_sample.pitch, at_sample.heading);
     for (std::size_t i = 0; i < mines.size(); ++i) {
-      const Vec3d e = s.p - mines[i];
+      const Vec3d e = at_sample.p - mines[i];
       if (std::hypot(e[0], e[1]) > model.sonar_max_range + 20.0) {
         previous_valid[i] = 0;
         continue;
@@ -220,9 +250,6 @@ Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
       previous_offset[i] = eb;
       previous_valid[i] = 1;
     }
-    if (k + 1 == n) break;
-
-    pilot.step(s, t, dt);
   }
 
   // Marks: missed ones go to the truth, outliers are corrupted, some lose their number.

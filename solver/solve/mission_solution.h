@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/mission/sensor_model.h"
 #include "solver/network/constraint_ref.h"
 #include "solver/network/mission_solver.h"
 #include "solver/network/tube_domains.h"
@@ -48,6 +49,7 @@ struct MissionSolution {
   std::vector<double> mark_time, mark_range;
   std::vector<std::int32_t> mark_mine, mark_side;
   int mine_count = 0;
+  SensorModel model;  // the bounds and the step model used
   // The enclosures.
   TubeDomains domains;                     // tube, increments, mine boxes
   std::vector<std::uint64_t> candidates;   // per mark row: candidate mines (bit i: mine i)

@@ -138,6 +138,7 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
   s.mark_mine = mission.mark_mine;
   s.mark_side = mission.mark_side;
   s.mine_count = mission.mine_count;
+  s.model = mission.model;
   s.mark_outlier.assign(mission.mark_count(), 0);
   s.gps_outlier.assign(mission.gps_time.size(), 0);
 

@@ -6,7 +6,6 @@
 #include "io/format_error.h"
 #include "io/geodesy.h"
 #include "io/files/mission_file.h"
-#include "io/sonar_side.h"
 #include "solver/sim/simulator.h"
 #include "tools/python/bindings.h"
 
@@ -19,16 +18,19 @@ struct ModelView {
   SensorModel* model;
 
   py::object get(const std::string& key) const {
-    if (key == "sonar_side") return py::str(std::string(io::sonar_side_name(model->sonar_side)));
+    for (const SensorModelChoice& c : sensor_model_choices())
+      if (c.key == key) return py::str(std::string(c.get(*model)));
     for (const SensorModelField& f : sensor_model_fields())
       if (f.key == key) return py::float_(model->*f.member);
     throw py::key_error(key);
   }
   void set(const std::string& key, const py::object& value) {
-    if (key == "sonar_side") {
-      model->sonar_side = io::parse_sonar_side(py::cast<std::string>(value), "sonar_side");
-      return;
-    }
+    for (const SensorModelChoice& c : sensor_model_choices())
+      if (c.key == key) {
+        if (!c.set(*model, py::cast<std::string>(value)))
+          throw io::FormatError("sensor model: " + key + ": expected " + choice_names(c));
+        return;
+      }
     for (const SensorModelField& f : sensor_model_fields())
       if (f.key == key) {
         SensorModel updated = *model;
@@ -42,7 +44,7 @@ struct ModelView {
   std::vector<std::string> keys() const {
     std::vector<std::string> k;
     for (const SensorModelField& f : sensor_model_fields()) k.emplace_back(f.key);
-    k.emplace_back("sonar_side");
+    for (const SensorModelChoice& c : sensor_model_choices()) k.emplace_back(c.key);
     return k;
   }
 };
@@ -125,8 +127,8 @@ void bind_mission(py::module_& m) {
          double unassociated, int outliers) {
         SimulationOptions o;
         o.seed = seed;
-        if (errors != "uniform" && errors != "worst-case") throw io::FormatError("errors: expected uniform or worst-case");
-        o.errors = errors == "uniform" ? SimulatedErrors::uniform : SimulatedErrors::worst_case;
+        if (!parse_simulated_errors(errors, o.errors))
+          throw io::FormatError("simulate: errors: expected uniform, worst-case or at-samples");
         o.duration = duration;
         o.rate = rate;
         o.mines = mines;

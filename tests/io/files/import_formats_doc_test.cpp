@@ -35,7 +35,12 @@ std::string model_key_table() {
   for (const SensorModelField& f : sensor_model_fields())
     table += "| `" + std::string(f.key) + "` | " + std::string(f.unit) + " | " + format_number(defaults.*f.member) +
               " | " + cell(f.meaning) + " |\n";
-  table += "| `sonar_side` | – | starboard | `starboard`, `port` or `both` (a string attribute in HDF5) |\n";
+  for (const SensorModelChoice& c : sensor_model_choices()) {
+    std::string names;
+    for (const std::string_view n : c.names) names += (names.empty() ? "" : ", ") + ("`" + std::string(n) + "`");
+    table += "| `" + std::string(c.key) + "` | – | " + std::string(c.get(defaults)) + " | " + cell(c.meaning) + ": " + names +
+             " (a string attribute in HDF5) |\n";
+  }
   return table;
 }
 

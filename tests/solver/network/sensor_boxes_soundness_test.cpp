@@ -53,15 +53,20 @@ struct Failures {
 // The missions of the test: headings held near 0, near pi/2, drifting across
 // +-pi from both sides, and a model with faster rates (wider excursions, which
 // take the attitude boxes past the Taylor form's 0.05 rad into the general sin/cos).
+// The truths have kinks inside steps (tents at the largest rate), so their jerk is
+// unbounded: they test the rate-hull step model, whose only assumption is the rates
+// (trapezoid_step_test.cpp tests the trapezoid with truths of bounded jerk).
 std::vector<BoundedRateMission> missions() {
   std::vector<BoundedRateMission> all;
   std::uint64_t seed = 0x5e45;
   for (const double heading : {0.0, std::numbers::pi / 2, std::numbers::pi - 0.02, -std::numbers::pi + 0.01, -1.0}) {
     BoundedRateOptions options;
+    options.model.step_model = StepModel::rate_hull;
     options.initial_heading = heading;
     all.push_back(test::make_bounded_rate_mission(seed++, options));
   }
   BoundedRateOptions fast;
+  fast.model.step_model = StepModel::rate_hull;
   fast.model.max_attitude_rate = 0.5;
   fast.model.max_acceleration = 1.0;
   fast.initial_heading = std::numbers::pi - 0.05;
@@ -69,6 +74,7 @@ std::vector<BoundedRateMission> missions() {
   // A steep floor (slope 0.1) under a robot that hardly moves sideways: the
   // altitude's rate bound |v| (1 + slope) is then what the adversary reaches.
   BoundedRateOptions steep;
+  steep.model.step_model = StepModel::rate_hull;
   steep.model.mine_depth_band = 7.5;
   steep.lateral_speed = 0.01;
   all.push_back(test::make_bounded_rate_mission(seed++, steep));

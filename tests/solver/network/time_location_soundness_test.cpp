@@ -47,6 +47,7 @@ TEST(TimeLocationSoundness, PositionsBetweenSamplesHoldTheTruthAndNarrowingKeeps
   std::uint64_t seed = 0x7104;
   for (const double heading : {0.0, std::numbers::pi - 0.02}) {
     test::BoundedRateOptions options;
+    options.model.step_model = StepModel::rate_hull;  // kinked truths: only the rates are bounded
     options.initial_heading = heading;
     options.samples = 300;
     const test::BoundedRateMission b = test::make_bounded_rate_mission(seed++, options);

@@ -1,0 +1,221 @@
+// The trapezoid step model (SensorModel::step_model, docs/model.md): the displacement
+// over a step, and to any time between two samples, encloses the exact integral of
+// R v whenever the boxes hold at the sample instants and |d²(R v)/dt²| <= max_jerk;
+// the paper's convention (the box of sample k over the whole step) does not.
+//
+// Truths of bounded jerk built here, with their integrals in closed form (long
+// double); the simulator's at-samples missions (readings at the ends of their bounds,
+// against the motion of the coming step) for the whole chain.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "solver/network/sensor_boxes.h"
+#include "solver/sim/simulator.h"
+#include "solver/solve/solve_mission.h"
+#include "tests/support/truth_checks.h"
+
+namespace gesmi {
+namespace {
+
+// One body-frame velocity component v(t) = base + amplitude sin(omega t + phase),
+// whose second derivative is at most amplitude omega² in magnitude.
+struct Wave {
+  long double base, amplitude, omega, phase;
+  long double at(long double t) const { return base + amplitude * std::sin(omega * t + phase); }
+  long double second_derivative(long double t) const { return -amplitude * omega * omega * std::sin(omega * t + phase); }
+  long double integral(long double t0, long double t1) const {
+    return base * (t1 - t0) - amplitude / omega * (std::cos(omega * t1 + phase) - std::cos(omega * t0 + phase));
+  }
+};
+
+// A level robot (roll = pitch = 0) on a constant heading with waving body speeds:
+// w = R(psi) v, and |w_north''|, |w_east''| <= |vx''| + |vy''|, |w_down''| = |vz''|.
+struct SmoothTruth {
+  long double heading;
+  Wave vx, vy, vz;
+  // The world displacement over [t0, t1], exactly.
+  std::array<long double, 3> displacement(long double t0, long double t1) const {
+    const long double x = vx.integral(t0, t1), y = vy.integral(t0, t1), z = vz.integral(t0, t1);
+    const long double c = std::cos(heading), s = std::sin(heading);
+    return {c * x - s * y, s * x + c * y, z};
+  }
+  long double jerk_bound() const {
+    const auto peak = [](const Wave& w) { return w.amplitude * w.omega * w.omega; };
+    return std::max(peak(vx) + peak(vy), peak(vz));
+  }
+};
+
+// Readings at the samples of an irregular grid, each error at 99 % of its bound with
+// the sign of the coming curvature (the boxes lean against the trapezoid's error).
+Mission mission_of(const SmoothTruth& truth, const SensorModel& model, std::size_t samples, std::uint64_t seed) {
+  Mission m;
+  m.model = model;
+  std::uint64_t state = seed;
+  const auto next_unit = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  double t = 0.0;
+  for (std::size_t k = 0; k < samples; ++k) {
+    m.time.push_back(t);
+    const auto lean = [&](const Wave& w, double bound) {
+      const long double curvature = w.second_derivative(t);
+      return static_cast<double>(w.at(t)) + 0.99 * bound * (curvature >= 0.0L ? 1.0 : -1.0);
+    };
+    const auto dvl_bound = [&](const Wave& w) {
+      return (model.dvl_relative * std::fabs(static_cast<double>(w.at(t))) + model.dvl_absolute) / (1.0 + model.dvl_relative);
+    };
+    m.roll.push_back(0.0);
+    m.pitch.push_back(0.0);
+    m.heading.push_back(static_cast<double>(truth.heading));
+    m.vx.push_back(lean(truth.vx, dvl_bound(truth.vx)));
+    m.vy.push_back(lean(truth.vy, dvl_bound(truth.vy)));
+    m.vz.push_back(lean(truth.vz, dvl_bound(truth.vz)));
+    m.altitude.push_back(10.0);
+    m.depth.push_back(5.0);
+    t += 0.05 + 0.25 * next_unit();  // steps of 0.05 to 0.3 s
+  }
+  return m;
+}
+
+bool holds(const Interval& x, long double value) { return x.lo() <= value && value <= x.hi(); }
+
+struct Misses {
+  int steps = 0, between = 0, checks = 0;
+};
+
+Misses check(const SmoothTruth& truth, const Mission& m) {
+  const SensorBoxes boxes(m, m.model);
+  Misses misses;
+  for (std::size_t k = 0; k + 1 < m.size(); ++k) {
+    const long double t0 = m.time[k], t1 = m.time[k + 1];
+    const Vec3I d = boxes.step_increment(k);
+    const auto exact = truth.displacement(t0, t1);
+    for (int i = 0; i < 3; ++i) misses.steps += !holds(d[i], exact[static_cast<std::size_t>(i)]);
+    for (const double f : {0.1, 0.5, 0.9}) {
+      const double t = m.time[k] + f * (m.time[k + 1] - m.time[k]);
+      Vec3I forward, backward;
+      boxes.offsets_between(k, Interval(t) - Interval(m.time[k]), Interval(m.time[k + 1]) - Interval(t), forward, backward);
+      const auto before = truth.displacement(t0, t), after = truth.displacement(t, t1);
+      for (int i = 0; i < 3; ++i) {
+        misses.between += !holds(forward[i], before[static_cast<std::size_t>(i)]);
+        misses.between += !holds(backward[i], after[static_cast<std::size_t>(i)]);
+      }
+    }
+    ++misses.checks;
+  }
+  return misses;
+}
+
+std::vector<SmoothTruth> truths() {
+  std::vector<SmoothTruth> all;
+  // Curvatures 0.6 J (vx), 0.3 J (vy), 0.9 J (vz) for J = 1 m/s³.
+  for (const long double heading : {0.0L, 0.7L, std::numbers::pi_v<long double> - 0.01L, -2.0L})
+    all.push_back({heading, {1.5L, 0.15L, 2.0L, 0.3L}, {0.0L, 0.075L, 2.0L, 1.1L}, {0.0L, 0.0225L, 6.3245553L, 0.0L}});
+  return all;
+}
+
+SensorModel model_with(StepModel step, double jerk) {
+  SensorModel model;
+  model.step_model = step;
+  model.max_jerk = jerk;
+  // Rates far above the truth's, so that the rate hull does not decide.
+  model.max_acceleration = 5.0;
+  model.max_attitude_rate = 1.0;
+  return model;
+}
+
+TEST(TrapezoidStep, EnclosesTheDisplacementOfEveryTruthOfBoundedJerk) {
+  std::uint64_t seed = 11;
+  for (const SmoothTruth& truth : truths()) {
+    ASSERT_LE(truth.jerk_bound(), 1.0L);
+    const Mission m = mission_of(truth, model_with(StepModel::trapezoid, 1.0), 800, seed++);
+    const Misses misses = check(truth, m);
+    EXPECT_EQ(misses.steps, 0) << "of " << misses.checks << " steps, heading " << static_cast<double>(truth.heading);
+    EXPECT_EQ(misses.between, 0) << "positions between samples";
+  }
+}
+
+TEST(TrapezoidStep, TheTestCatchesARemainderTooSmall) {
+  // Negative control: the same truths with J declared at a third of their jerk.
+  int misses = 0;
+  std::uint64_t seed = 11;
+  for (const SmoothTruth& truth : truths()) misses += check(truth, mission_of(truth, model_with(StepModel::trapezoid, 0.3), 800, seed++)).steps;
+  EXPECT_GT(misses, 0);
+}
+
+TEST(TrapezoidStep, ThePapersConventionLosesTruthsWhoseBoxesHoldOnlyAtTheSamples) {
+  // Expected to fail: the box of sample k does not hold over the step, so dt [R v]_k
+  // misses the displacement. This is why the default is not the paper's convention.
+  int misses = 0;
+  std::uint64_t seed = 11;
+  for (const SmoothTruth& truth : truths()) misses += check(truth, mission_of(truth, model_with(StepModel::sample, 1.0), 800, seed++)).steps;
+  EXPECT_GT(misses, 100);
+}
+
+TEST(TrapezoidStep, NeverWiderThanTheRateHull) {
+  std::uint64_t seed = 21;
+  for (const SmoothTruth& truth : truths()) {
+    Mission m = mission_of(truth, model_with(StepModel::trapezoid, 1.0), 400, seed++);
+    m.model.max_acceleration = 0.2;  // a tight rate hull that sometimes wins
+    const SensorBoxes trapezoid(m, m.model);
+    SensorModel hull_model = m.model;
+    hull_model.step_model = StepModel::rate_hull;
+    const SensorBoxes hull(m, hull_model);
+    for (std::size_t k = 0; k + 1 < m.size(); ++k) {
+      const Vec3I a = trapezoid.step_increment(k), b = hull.step_increment(k);
+      for (int i = 0; i < 3; ++i) ASSERT_TRUE(a[i].is_subset(b[i])) << "step " << k;
+    }
+  }
+}
+
+// The simulator's missions: truth integrated on sub-steps, rates constant over each
+// step (so the jerk inside a step is that of the rotation, about 0.01 m/s³).
+std::size_t steps_outside(const Mission& m) {
+  const TubeDomains d = sensor_domains(m, m.model);
+  const std::vector<double>* truth[3] = {&m.truth_x, &m.truth_y, &m.truth_z};
+  const std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
+  std::size_t outside = 0;
+  for (std::size_t k = 0; k + 1 < m.size(); ++k)
+    for (int i = 0; i < 3; ++i) outside += !(*increments[i])[k].contains((*truth[i])[k + 1] - (*truth[i])[k]);
+  return outside;
+}
+
+TEST(TrapezoidStep, SimulatedMissionsStepInsideAndThePapersConventionDoesNot) {
+  std::size_t paper_outside = 0;
+  for (const SimulatedErrors errors : {SimulatedErrors::uniform, SimulatedErrors::at_samples}) {
+    for (const std::uint64_t seed : {61u, 62u, 63u}) {
+      SCOPED_TRACE(::testing::Message() << simulated_errors_name(errors) << ", seed " << seed);
+      SimulationOptions o;
+      o.seed = seed;
+      o.duration = 900.0;
+      o.errors = errors;
+      Mission m = simulate_mission(o);
+      for (const StepModel step : {StepModel::trapezoid, StepModel::rate_hull}) {
+        m.model.step_model = step;
+        EXPECT_EQ(steps_outside(m), 0u);
+      }
+      m.model.step_model = StepModel::sample;
+      if (errors == SimulatedErrors::at_samples) paper_outside += steps_outside(m);
+    }
+  }
+  EXPECT_GT(paper_outside, 1000u) << "the at-samples errors were meant to defeat the paper's convention";
+}
+
+TEST(TrapezoidStep, WholeMissionsWithBoxesAtTheSamplesOnlyKeepTheTruth) {
+  for (const std::uint64_t seed : {71u, 72u}) {
+    SimulationOptions o;
+    o.seed = seed;
+    o.errors = SimulatedErrors::at_samples;
+    const Mission m = simulate_mission(o);
+    const MissionSolution s = solve_mission(m);
+    ASSERT_TRUE(s.report.consistent) << s.report.message;
+    EXPECT_TRUE(test::truth_inside(m, s.domains));
+  }
+}
+
+}  // namespace
+}  // namespace gesmi
