@@ -100,12 +100,20 @@ Vec3I SensorBoxes::step_increment(const SampleBoxes& a, const SampleBoxes& b, st
   }
   // Trapezoid rule with its remainder, per component: the integral of w over the step
   // is dt/2 (w(t_k) + w(t_k+1)) - dt^3/12 w''(xi), with w(t_k) in sample k's box R v
-  // and |w''| <= J. Intersected with the rate hull, so never wider than it.
+  // and |w''| <= J.
   const Interval half = dt / Interval(2.0);
   const Interval remainder = Interval(-1.0, 1.0) * (pow(dt, 3) / Interval(12.0)) * Interval(model_.max_jerk);
-  const Vec3I hull = rate_hull_increment(a, b, k);
   Vec3I d;
-  for (int i = 0; i < 3; ++i) d[i] = intersect(half * (a.world_velocity[i] + b.world_velocity[i]) + remainder, hull[i]);
+  for (int i = 0; i < 3; ++i) d[i] = half * (a.world_velocity[i] + b.world_velocity[i]) + remainder;
+  // Intersected with the rate hull, so never wider than it. The hull holds both samples'
+  // world velocities widened by at least max_acceleration dt / 2 on every component (a
+  // world component of R (v ± e) spans ± e at least: a rotation's rows have an L1 norm
+  // >= 1), so the trapezoid's ± J dt² / 12 can only stick out when J dt > 6
+  // max_acceleration; elsewhere the second rotation per step is not worth its cost.
+  if (model_.max_jerk * dt.hi() > 6.0 * model_.max_acceleration) {
+    const Vec3I hull = rate_hull_increment(a, b, k);
+    for (int i = 0; i < 3; ++i) d[i] = intersect(d[i], hull[i]);
+  }
   return d;
 }
 
