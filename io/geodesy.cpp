@@ -9,6 +9,7 @@
 
 #include "io/format_error.h"
 #include "solver/interval/rounding.h"
+#include "solver/mission/meridian_convergence.h"
 
 namespace gesmi::io {
 
@@ -58,7 +59,6 @@ void fill_local_gps(Mission& m, const std::string& source) {
   m.gps_east_halfwidth.assign(g, 0.0);
   const double a = GeographicLib::Constants::WGS84_a();
   const double degree = std::numbers::pi / 180.0;
-  double farthest = 0.0;
   for (std::size_t i = 0; i < g; ++i) {
     const NorthEast p = frame.to_local(m.gps_latitude[i], m.gps_longitude[i]);
     const double distance = std::hypot(p.north, p.east);
@@ -66,7 +66,6 @@ void fill_local_gps(Mission& m, const std::string& source) {
       throw FormatError(source + ": /gps/lonlat: row " + std::to_string(i) + ": fix is " +
                         std::to_string(static_cast<long>(distance)) + " m from the origin, beyond the " +
                         std::to_string(static_cast<long>(kLocalFrameZone)) + " m zone of the local frame");
-    farthest = std::max(farthest, distance);
     m.gps_north[i] = p.north;
     m.gps_east[i] = p.east;
     // A degree bound in metres: the radius of curvature never exceeds a / (1 - f)^2
@@ -82,22 +81,20 @@ void fill_local_gps(Mission& m, const std::string& source) {
       m.gps_east_halfwidth[i] = add_up(m.gps_given_east_halfwidth[i], kLocalFrameError);
     }
   }
-  // Meridian convergence over the mission area: the fixes' distance plus 2 km of
-  // survey around them, times tan(latitude) / R, at the largest latitude of the area
-  // (at the equator the convergence is not zero a few km north or south of it).
-  const double extent = std::min(farthest + 2000.0, kLocalFrameZone);
-  const double angle = extent / (0.99 * a);  // rad, the extent seen from the Earth's centre
-  const double latitude = std::min(std::fabs(m.origin.latitude) * degree + angle, std::numbers::pi / 2 - 0.01);
-  m.heading_frame_margin = angle * std::tan(latitude) * 1.01;
+  // The heading's margin holds anywhere in the frame's zone: the solver bounds it
+  // again, per sample, over the tube it solved (solver/network/heading_frame.h).
+  m.heading_frame_margin = meridian_convergence_within(m.origin.latitude, kLocalFrameZone);
   // A fix's bounds are north and east half-widths along its own meridian and
-  // parallel, which turn against the frame's axes by the meridian convergence (at
-  // most heading_frame_margin over the area): the frame box must hold that box
-  // turned, so each half-width grows by the other times sin(angle) <= angle: for a
-  // 2.51 m box, 1.2 mm on the reference mission, 11 mm at 70° and 10 km, 25 cm at 89°.
+  // parallel, which turn against the frame's axes by the convergence where the true
+  // position lies (within the larger half-width of the fix): the frame box must hold
+  // that box turned, so each half-width grows by the other times sin(angle) <= angle
+  // (for a 2.51 m box 3 km from the origin, 1.2 mm at 48°; 25 cm at 89° and 10 km).
   for (std::size_t i = 0; i < g; ++i) {
     const double north = m.gps_north_halfwidth[i], east = m.gps_east_halfwidth[i];
-    m.gps_north_halfwidth[i] = add_up(north, mul_up(east, m.heading_frame_margin));
-    m.gps_east_halfwidth[i] = add_up(east, mul_up(north, m.heading_frame_margin));
+    const double reach = add_up(std::hypot(m.gps_north[i], m.gps_east[i]), 2.0 * std::max(north, east));
+    const double turn = std::min(m.heading_frame_margin, meridian_convergence_within(m.origin.latitude, reach));
+    m.gps_north_halfwidth[i] = add_up(north, mul_up(east, turn));
+    m.gps_east_halfwidth[i] = add_up(east, mul_up(north, turn));
   }
 }
 

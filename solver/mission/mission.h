@@ -73,8 +73,9 @@ struct Mission {
   // conversion error).
   std::vector<double> gps_north, gps_east;                     // m
   std::vector<double> gps_north_halfwidth, gps_east_halfwidth;  // m
-  // Largest angle between true north at a point of the mission and the local
-  // frame's north axis (meridian convergence), added to the heading bound (rad).
+  // Largest angle between true north and the local frame's north axis (meridian
+  // convergence) anywhere in the frame's zone (rad), added to the heading bound; the
+  // solve narrows it per sample over the tube (solver/network/heading_frame.h).
   double heading_frame_margin = 0.0;
 
   // Mark table, M detections.

@@ -47,7 +47,12 @@ std::vector<PositionFix> gps_fixes(const Mission& m) {
 }
 
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes) {
-  const SensorBoxes boxes(mission, model);
+  return build_network(mission, model, fixes, zone_frame(mission));
+}
+
+MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
+                             const HeadingFrame& frame) {
+  const SensorBoxes boxes(mission, model, frame);
   MissionNetwork net;
   net.time = mission.time;
   net.mine_count = mission.mine_count;
@@ -82,26 +87,7 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
 }
 
 TubeDomains sensor_domains(const Mission& mission, const SensorModel& model) {
-  const SensorBoxes boxes(mission, model);
-  const std::size_t n = mission.size();
-  TubeDomains d;
-  d.px.assign(n, Interval::entire());
-  d.py.assign(n, Interval::entire());
-  d.pz.resize(n);
-  d.dx.resize(n > 0 ? n - 1 : 0);
-  d.dy.resize(d.dx.size());
-  d.dz.resize(d.dx.size());
-  for (std::size_t k = 0; k < n; ++k) d.pz[k] = boxes.depth(k);
-  SensorBoxes::SampleBoxes next = boxes.sample(0);
-  for (std::size_t k = 0; k + 1 < n; ++k) {
-    const SensorBoxes::SampleBoxes current = next;
-    next = boxes.sample(k + 1);
-    const Vec3I inc = boxes.step_increment(current, next, k);
-    d.dx[k] = inc[0];
-    d.dy[k] = inc[1];
-    d.dz[k] = inc[2];
-  }
-  return d;
+  return sensor_domains_in(frameless_sensor_priors(mission, model), zone_frame(mission));
 }
 
 void add_network_priors(TubeDomains& d, const MissionNetwork& network) {

@@ -12,6 +12,7 @@
 
 #include "solver/mission/mission.h"
 #include "solver/network/detection.h"
+#include "solver/network/heading_frame.h"
 #include "solver/network/sensor_boxes.h"
 #include "solver/network/tube_domains.h"
 
@@ -43,15 +44,20 @@ struct MissionNetwork {
 
 /// Builds the sparse constraints. A mark with mine -1 is a disjunction over the
 /// mines (seed 001 VI-4); mine_count must exceed every mine number and be <= kMaxMines.
+/// The headings of the detections and between-sample offsets take the mission's
+/// zone-wide frame margin, or `frame`'s per-sample ones.
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes);
+MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
+                             const HeadingFrame& frame);
 
 /// The prior domains: increments from the sensors, depth from the barometer,
 /// fixes on sample times, unbounded elsewhere; mines unbounded; each detection's
 /// candidate mines.
 TubeDomains initial_domains(const Mission& mission, const SensorModel& model, const MissionNetwork& network);
 
-/// The two halves of initial_domains: what the sensors give (increments and depth),
-/// which does not depend on the fixes and marks, and the network's own priors
+/// The two halves of initial_domains: what the sensors give (increments and depth,
+/// under the mission's zone-wide frame margin; heading_frame.h builds them for
+/// per-sample margins), which does not depend on the fixes and marks, and the network's own priors
 /// (fixes on sample times, unbounded mines, candidate mines).
 TubeDomains sensor_domains(const Mission& mission, const SensorModel& model);
 void add_network_priors(TubeDomains& domains, const MissionNetwork& network);

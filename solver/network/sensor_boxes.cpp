@@ -1,5 +1,6 @@
 #include "solver/network/sensor_boxes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -17,8 +18,9 @@ Interval SensorBoxes::heading(std::size_t k) const {
   // The gyrocompass measures from true north, which turns against the local frame
   // across the mission area (meridian convergence): widen by that angle.
   const Interval h = reading(m_.heading, m_.half_widths.heading, k, model_.heading);
-  if (m_.heading_frame_margin == 0.0) return h;
-  return Interval(sub_down(h.lo(), m_.heading_frame_margin), add_up(h.hi(), m_.heading_frame_margin));
+  const double margin = frame_.at(k);
+  if (margin == 0.0) return h;
+  return Interval(sub_down(h.lo(), margin), add_up(h.hi(), margin));
 }
 
 Vec3I SensorBoxes::velocity(std::size_t k) const {
@@ -80,20 +82,23 @@ Vec3I SensorBoxes::step_velocity(const SampleBoxes& a, const SampleBoxes& b, std
                widen(a.velocity[2], b.velocity[2], e));
 }
 
-Vec3I SensorBoxes::rate_hull_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const {
+Vec3I SensorBoxes::rate_hull_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k,
+                                       StepTurn* turn) const {
   // Mean value theorem for integrals: the integral over [t_k, t_k+1] of a function
   // whose values stay in the (convex) box B is in (t_k+1 - t_k) B.
   const Interval dt = step_duration(k);
   const Vec3I w = body_to_world(step_attitude(a, b, k), step_velocity(a, b, k));
+  if (turn) *turn = {mul_up(dt.hi(), w[0].mag()), mul_up(dt.hi(), w[1].mag()), std::nullopt};
   return Vec3I(dt * w[0], dt * w[1], dt * w[2]);
 }
 
-Vec3I SensorBoxes::step_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const {
+Vec3I SensorBoxes::step_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k, StepTurn* turn) const {
   const Interval dt = step_duration(k);
   switch (model_.step_model) {
     case StepModel::rate_hull:
-      return rate_hull_increment(a, b, k);
+      return rate_hull_increment(a, b, k, turn);
     case StepModel::sample:
+      if (turn) *turn = {mul_up(dt.hi(), a.world_velocity[0].mag()), mul_up(dt.hi(), a.world_velocity[1].mag()), std::nullopt};
       return Vec3I(dt * a.world_velocity[0], dt * a.world_velocity[1], dt * a.world_velocity[2]);
     case StepModel::trapezoid:
       break;
@@ -105,14 +110,32 @@ Vec3I SensorBoxes::step_increment(const SampleBoxes& a, const SampleBoxes& b, st
   const Interval remainder = Interval(-1.0, 1.0) * (pow(dt, 3) / Interval(12.0)) * Interval(model_.max_jerk);
   Vec3I d;
   for (int i = 0; i < 3; ++i) d[i] = half * (a.world_velocity[i] + b.world_velocity[i]) + remainder;
+  // A turn moves only the sample values: the remainder bounds w'' in the local frame.
+  if (turn)
+    *turn = {mul_up(half.hi(), add_up(a.world_velocity[0].mag(), b.world_velocity[0].mag())),
+             mul_up(half.hi(), add_up(a.world_velocity[1].mag(), b.world_velocity[1].mag())), std::nullopt};
   // Intersected with the rate hull, so never wider than it. The hull holds both samples'
   // world velocities widened by at least max_acceleration dt / 2 on every component (a
   // world component of R (v ± e) spans ± e at least: a rotation's rows have an L1 norm
   // >= 1), so the trapezoid's ± J dt² / 12 can only stick out when J dt > 6
   // max_acceleration; elsewhere the second rotation per step is not worth its cost.
   if (model_.max_jerk * dt.hi() > 6.0 * model_.max_acceleration) {
-    const Vec3I hull = rate_hull_increment(a, b, k);
-    for (int i = 0; i < 3; ++i) d[i] = intersect(d[i], hull[i]);
+    StepTurn hull_turn;
+    const Vec3I hull = rate_hull_increment(a, b, k, &hull_turn);
+    Vec3I both;
+    bool meet = true;
+    for (int i = 0; i < 3; ++i) {
+      both[i] = intersect(d[i], hull[i]);
+      meet = meet && !both[i].is_empty();
+    }
+    if (!turn) return both;
+    // A later turn widens both by the larger of their sensitivities.
+    turn->north = std::max(turn->north, hull_turn.north);
+    turn->east = std::max(turn->east, hull_turn.east);
+    // Boxes that do not meet say the data break the model, unless that turn mends
+    // it (heading_frame.h): then the caller gets both.
+    if (meet) return both;
+    turn->apart_hull = hull;
   }
   return d;
 }

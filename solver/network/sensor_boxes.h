@@ -7,10 +7,12 @@
 // between two samples, follows the model's StepModel (docs/model.md).
 
 #include <cstddef>
+#include <optional>
 
 #include "solver/interval/box.h"
 #include "solver/mission/mission.h"
 #include "solver/model/euler.h"
+#include "solver/network/heading_frame.h"
 
 namespace gesmi {
 
@@ -19,8 +21,12 @@ inline constexpr double kFrameScaleMargin = 2e-5;
 
 class SensorBoxes {
  public:
-  /// The mission must outlive this object (it reads the mission's arrays).
-  SensorBoxes(const Mission& mission, const SensorModel& model) : m_(mission), model_(model) {}
+  /// The mission must outlive this object (it reads the mission's arrays), and so must
+  /// the frame's per-sample margins. The heading boxes grow by the frame's margin
+  /// (the mission's zone-wide one by default).
+  SensorBoxes(const Mission& mission, const SensorModel& model) : SensorBoxes(mission, model, zone_frame(mission)) {}
+  SensorBoxes(const Mission& mission, const SensorModel& model, const HeadingFrame& frame)
+      : m_(mission), model_(model), frame_(frame) {}
 
   Interval roll(std::size_t k) const;
   Interval pitch(std::size_t k) const;
@@ -56,9 +62,19 @@ class SensorBoxes {
   SampleBoxes sample(std::size_t k) const;
   Attitude<Interval> step_attitude(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
   Vec3I step_velocity(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
-  Vec3I step_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
+  /// Upper bounds of the integrals of |w_north| and |w_east| over a step, as the step
+  /// model sees w: what a further turn of the heading widens the increment by
+  /// (heading_frame.h).
+  struct StepTurn {
+    double north = 0.0, east = 0.0;
+    /// Trapezoid steps that also take the rate hull: when the two boxes do not meet,
+    /// the increment returned is the trapezoid's alone and this is the hull, which the
+    /// turned increment must meet (a turn widens both by the same amount).
+    std::optional<Vec3I> apart_hull;
+  };
+  Vec3I step_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k, StepTurn* turn = nullptr) const;
   /// dt times R v over the step's rate-bounded boxes: the rate_hull model.
-  Vec3I rate_hull_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
+  Vec3I rate_hull_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k, StepTurn* turn = nullptr) const;
 
   const SensorModel& model() const { return model_; }
 
@@ -73,6 +89,7 @@ class SensorBoxes {
 
   const Mission& m_;
   SensorModel model_;
+  HeadingFrame frame_;
 };
 
 }  // namespace gesmi

@@ -23,4 +23,9 @@ struct TubeDomains {
   double max_horizontal_width() const;
 };
 
+/// Intersects every domain of `into` with the same one of `other` (same mission and
+/// network) and keeps only the candidate mines both allow. Empty results stay for the
+/// solver to report.
+void intersect_with(TubeDomains& into, const TubeDomains& other);
+
 }  // namespace gesmi

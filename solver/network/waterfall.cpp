@@ -19,7 +19,9 @@ Interval feasible_ranges(SonarPlane plane, const Vec3I& position, const Vec3I& m
 }  // namespace
 
 Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains) {
-  const SensorBoxes boxes(mission, model);
+  // The tube holds the truth, so the frame's margins over it hold too.
+  const std::vector<double> margins = heading_margins_over(mission, domains);
+  const SensorBoxes boxes(mission, model, HeadingFrame{mission.heading_frame_margin, margins});
   Waterfall w;
   w.steps = domains.size();
   w.mines = domains.mines.size();

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "solver/network/heading_frame.h"
 #include "solver/network/inconsistency_text.h"
 #include "solver/solve/warm_start.h"
 
@@ -42,28 +43,90 @@ std::vector<ConstraintRef> diagnose(const MissionNetwork& net, const TubeDomains
   return explaining;
 }
 
-void solve_cold(const Mission& mission, const MissionNetwork& net, const SolveOptions& options, MissionSolution& s) {
-  const TubeDomains sensor = sensor_domains(mission, mission.model);
-  s.domains = sensor;
-  add_network_priors(s.domains, net);
+// Builds the network and the sensor domains under a frame, the time counted as "build".
+struct Pass {
+  MissionNetwork net;
+  TubeDomains sensor;
+};
+
+Pass build_pass(const Mission& mission, std::span<const PositionFix> fixes, const SensorPriors& priors,
+                const HeadingFrame& frame, MissionSolution& s) {
+  const auto start = Clock::now();
+  Pass pass{build_network(mission, mission.model, fixes, frame), sensor_domains_in(priors, frame)};
+  s.timings_ms["build"] += elapsed_ms(start);
+  return pass;
+}
+
+SensorPriors build_priors(const Mission& mission, MissionSolution& s) {
+  const auto start = Clock::now();
+  SensorPriors priors = frameless_sensor_priors(mission, mission.model);
+  s.timings_ms["build"] += elapsed_ms(start);
+  return priors;
+}
+
+// The per-sample margins over a first pass's tube (heading_frame.h), or none when the
+// mission has no frame margin or that pass found no solution.
+bool narrow_frame(const Mission& mission, const TubeDomains& tube, bool consistent, std::vector<double>& margins,
+                  HeadingFrame& frame) {
+  if (!consistent || frame.uniform == 0.0) return false;
+  margins = heading_margins_over(mission, tube);
+  frame.per_sample = margins;
+  return true;
+}
+
+void solve_cold(const Mission& mission, std::span<const PositionFix> fixes, const SolveOptions& options,
+                MissionSolution& s, MissionNetwork& net) {
+  const SensorPriors priors = build_priors(mission, s);
+  HeadingFrame frame = zone_frame(mission);
+  std::vector<double> margins;
+  Pass pass = build_pass(mission, fixes, priors, frame, s);
+  s.domains = pass.sensor;
+  add_network_priors(s.domains, pass.net);
   auto start = Clock::now();
-  take_propagation(s.report, solve(net, s.domains, options.propagation));
+  take_propagation(s.report, solve(pass.net, s.domains, options.propagation));
   s.timings_ms["propagate"] = elapsed_ms(start);
+  if (narrow_frame(mission, s.domains, s.report.consistent, margins, frame)) {
+    const int first_sweeps = s.report.sweeps;
+    pass = build_pass(mission, fixes, priors, frame, s);
+    TubeDomains narrowed = pass.sensor;
+    add_network_priors(narrowed, pass.net);
+    intersect_with(narrowed, s.domains);  // the first pass's enclosure holds under a looser model
+    s.domains = std::move(narrowed);
+    start = Clock::now();
+    take_propagation(s.report, solve(pass.net, s.domains, options.propagation));
+    s.timings_ms["propagate"] += elapsed_ms(start);
+    s.report.sweeps += first_sweeps;
+  }
+  net = std::move(pass.net);
   if (s.report.consistent || !options.diagnose) return;
   start = Clock::now();
-  s.report.explained_by = diagnose(net, sensor, options.propagation);
+  s.report.explained_by = diagnose(net, pass.sensor, options.propagation);
   s.timings_ms["diagnose"] = elapsed_ms(start);
 }
 
-void solve_outliers(const Mission& mission, const MissionNetwork& net, const SolveOptions& options, MissionSolution& s) {
-  const auto start = Clock::now();
+void solve_outliers(const Mission& mission, std::span<const PositionFix> fixes, const SolveOptions& options,
+                    MissionSolution& s, MissionNetwork& net) {
   OutlierOptions o;
   o.max_outliers = options.max_outliers;
   o.mode = options.outlier_mode;
   o.trust_fixes = options.trust_gps;
   o.solver = options.propagation;
-  const OutlierReport r = solve_with_outliers(net, sensor_domains(mission, mission.model), s.domains, o);
+  const SensorPriors priors = build_priors(mission, s);
+  HeadingFrame frame = zone_frame(mission);
+  std::vector<double> margins;
+  Pass pass = build_pass(mission, fixes, priors, frame, s);
+  auto start = Clock::now();
+  OutlierReport r = solve_with_outliers(pass.net, pass.sensor, s.domains, o);
   s.timings_ms["propagate"] = elapsed_ms(start);
+  // The enclosure of either mode holds the truth under that mode's premise, and so do
+  // the margins over it; the second pass solves afresh under them.
+  if (narrow_frame(mission, s.domains, r.consistent(), margins, frame)) {
+    pass = build_pass(mission, fixes, priors, frame, s);
+    start = Clock::now();
+    r = solve_with_outliers(pass.net, pass.sensor, s.domains, o);
+    s.timings_ms["propagate"] += elapsed_ms(start);
+  }
+  net = std::move(pass.net);
   SolveReport& report = s.report;
   report.mode = options.outlier_mode == OutlierMode::relaxed ? SolveMode::outliers : SolveMode::minimal_outliers;
   report.consistent = r.consistent();
@@ -82,13 +145,22 @@ void solve_outliers(const Mission& mission, const MissionNetwork& net, const Sol
   for (std::size_t a = 0; a < net.anchors.size(); ++a) s.gps_outlier[net.anchors[a].fix.source_index] = r.fix_outlier[a];
 }
 
-void solve_warm(const Mission& mission, const MissionNetwork& net, const SolveOptions& options, MissionSolution& s) {
-  std::string why = warm_start_problem(mission, *options.warm_from);
+void solve_warm(const Mission& mission, std::span<const PositionFix> fixes, const SolveOptions& options,
+                MissionSolution& s, MissionNetwork& net) {
+  const MissionSolution& previous = *options.warm_from;
+  std::string why = warm_start_problem(mission, previous);
   std::optional<detail::WarmDomains> warm;
-  if (why.empty()) warm = detail::warm_domains(mission, net, *options.warm_from, why);
+  if (why.empty()) {
+    // The previous tube holds the truth: the added marks take the margins over it.
+    const auto start = Clock::now();
+    const std::vector<double> margins = heading_margins_over(mission, previous.domains);
+    net = build_network(mission, mission.model, fixes, HeadingFrame{mission.heading_frame_margin, margins});
+    s.timings_ms["build"] += elapsed_ms(start);
+    warm = detail::warm_domains(mission, net, previous, why);
+  }
   if (!warm) {
     s.report.cold_fallback = why;
-    solve_cold(mission, net, options, s);
+    solve_cold(mission, fixes, options, s, net);
     return;
   }
   s.report.mode = SolveMode::warm;
@@ -142,22 +214,22 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
   s.mark_outlier.assign(mission.mark_count(), 0);
   s.gps_outlier.assign(mission.gps_time.size(), 0);
 
-  auto start = Clock::now();
-  const MissionNetwork net = build_network(mission, mission.model, gps_fixes(mission));
-  s.timings_ms["build"] = elapsed_ms(start);
+  const std::vector<PositionFix> fixes = gps_fixes(mission);
+  MissionNetwork net;
+  s.timings_ms["build"] = 0.0;
   if (options.warm_from)
-    solve_warm(mission, net, options, s);
+    solve_warm(mission, fixes, options, s, net);
   else if (options.max_outliers >= 0)
-    solve_outliers(mission, net, options, s);
+    solve_outliers(mission, fixes, options, s, net);
   else
-    solve_cold(mission, net, options, s);
+    solve_cold(mission, fixes, options, s, net);
 
   s.candidates.assign(mission.mark_count(), 0);
   if (s.domains.candidates.size() == net.detections.size())
     for (std::size_t j = 0; j < net.detections.size(); ++j) s.candidates[net.detections[j].mark] = s.domains.candidates[j];
   if (!s.report.consistent) s.report.message = wording(s.report, options, net);
   if (options.waterfall) {
-    start = Clock::now();
+    const auto start = Clock::now();
     s.waterfall = compute_waterfall(mission, mission.model, s.domains);
     s.timings_ms["waterfall"] = elapsed_ms(start);
   }

@@ -15,71 +15,16 @@
 #include "solver/network/sensor_boxes.h"
 #include "solver/sim/simulator.h"
 #include "solver/solve/solve_mission.h"
+#include "tests/support/smooth_truth.h"
 #include "tests/support/truth_checks.h"
 
 namespace gesmi {
 namespace {
 
-// One body-frame velocity component v(t) = base + amplitude sin(omega t + phase),
-// whose second derivative is at most amplitude omega² in magnitude.
-struct Wave {
-  long double base, amplitude, omega, phase;
-  long double at(long double t) const { return base + amplitude * std::sin(omega * t + phase); }
-  long double second_derivative(long double t) const { return -amplitude * omega * omega * std::sin(omega * t + phase); }
-  long double integral(long double t0, long double t1) const {
-    return base * (t1 - t0) - amplitude / omega * (std::cos(omega * t1 + phase) - std::cos(omega * t0 + phase));
-  }
-};
-
-// A level robot (roll = pitch = 0) on a constant heading with waving body speeds:
-// w = R(psi) v, and |w_north''|, |w_east''| <= |vx''| + |vy''|, |w_down''| = |vz''|.
-struct SmoothTruth {
-  long double heading;
-  Wave vx, vy, vz;
-  // The world displacement over [t0, t1], exactly.
-  std::array<long double, 3> displacement(long double t0, long double t1) const {
-    const long double x = vx.integral(t0, t1), y = vy.integral(t0, t1), z = vz.integral(t0, t1);
-    const long double c = std::cos(heading), s = std::sin(heading);
-    return {c * x - s * y, s * x + c * y, z};
-  }
-  long double jerk_bound() const {
-    const auto peak = [](const Wave& w) { return w.amplitude * w.omega * w.omega; };
-    return std::max(peak(vx) + peak(vy), peak(vz));
-  }
-};
-
-// Readings at the samples of an irregular grid, each error at 99 % of its bound with
-// the sign of the coming curvature (the boxes lean against the trapezoid's error).
-Mission mission_of(const SmoothTruth& truth, const SensorModel& model, std::size_t samples, std::uint64_t seed) {
-  Mission m;
-  m.model = model;
-  std::uint64_t state = seed;
-  const auto next_unit = [&] {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return static_cast<double>(state >> 11) / 9007199254740992.0;
-  };
-  double t = 0.0;
-  for (std::size_t k = 0; k < samples; ++k) {
-    m.time.push_back(t);
-    const auto lean = [&](const Wave& w, double bound) {
-      const long double curvature = w.second_derivative(t);
-      return static_cast<double>(w.at(t)) + 0.99 * bound * (curvature >= 0.0L ? 1.0 : -1.0);
-    };
-    const auto dvl_bound = [&](const Wave& w) {
-      return (model.dvl_relative * std::fabs(static_cast<double>(w.at(t))) + model.dvl_absolute) / (1.0 + model.dvl_relative);
-    };
-    m.roll.push_back(0.0);
-    m.pitch.push_back(0.0);
-    m.heading.push_back(static_cast<double>(truth.heading));
-    m.vx.push_back(lean(truth.vx, dvl_bound(truth.vx)));
-    m.vy.push_back(lean(truth.vy, dvl_bound(truth.vy)));
-    m.vz.push_back(lean(truth.vz, dvl_bound(truth.vz)));
-    m.altitude.push_back(10.0);
-    m.depth.push_back(5.0);
-    t += 0.05 + 0.25 * next_unit();  // steps of 0.05 to 0.3 s
-  }
-  return m;
-}
+using test::SmoothTruth;
+using test::mission_of;
+using test::model_with;
+using test::truths;
 
 bool holds(const Interval& x, long double value) { return x.lo() <= value && value <= x.hi(); }
 
@@ -108,24 +53,6 @@ Misses check(const SmoothTruth& truth, const Mission& m) {
     ++misses.checks;
   }
   return misses;
-}
-
-std::vector<SmoothTruth> truths() {
-  std::vector<SmoothTruth> all;
-  // Curvatures 0.6 J (vx), 0.3 J (vy), 0.9 J (vz) for J = 1 m/s³.
-  for (const long double heading : {0.0L, 0.7L, std::numbers::pi_v<long double> - 0.01L, -2.0L})
-    all.push_back({heading, {1.5L, 0.15L, 2.0L, 0.3L}, {0.0L, 0.075L, 2.0L, 1.1L}, {0.0L, 0.0225L, 6.3245553L, 0.0L}});
-  return all;
-}
-
-SensorModel model_with(StepModel step, double jerk) {
-  SensorModel model;
-  model.step_model = step;
-  model.max_jerk = jerk;
-  // Rates far above the truth's, so that the rate hull does not decide.
-  model.max_acceleration = 5.0;
-  model.max_attitude_rate = 1.0;
-  return model;
 }
 
 TEST(TrapezoidStep, EnclosesTheDisplacementOfEveryTruthOfBoundedJerk) {

@@ -1,0 +1,123 @@
+#include "solver/network/heading_frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "solver/interval/rounding.h"
+#include "solver/mission/meridian_convergence.h"
+#include "solver/network/sensor_boxes.h"
+
+namespace gesmi {
+namespace {
+
+float float_up(double x) {
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
+Interval widen(const Interval& x, double e) { return Interval(sub_down(x.lo(), e), add_up(x.hi(), e)); }
+
+// How far a turn by at most `margin` moves one component of a step's increment:
+// margin times the other component's integral, plus margin²/2 times its own.
+double turn_widening(double margin, double other, double own) {
+  return add_up(mul_up(margin, other), mul_up(mul_up(0.5, mul_up(margin, margin)), own));
+}
+
+// The largest |v| (m/s) the DVL boxes allow at any instant: at the samples, plus what
+// max_acceleration adds within the longest step on each axis.
+double speed_bound(const Mission& m) {
+  const SensorBoxes boxes(m, m.model, HeadingFrame{});
+  double speed = 0.0, longest = 0.0;
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    const Vec3I v = boxes.velocity(k);
+    const double squares = add_up(add_up(mul_up(v[0].mag(), v[0].mag()), mul_up(v[1].mag(), v[1].mag())),
+                                  mul_up(v[2].mag(), v[2].mag()));
+    speed = std::max(speed, sqrt_up(squares));
+    if (k + 1 < m.size()) longest = std::max(longest, sub_up(m.time[k + 1], m.time[k]));
+  }
+  // sqrt(3) < 1.7321: the acceleration bound holds per axis.
+  return add_up(speed, mul_up(1.7321, mul_up(m.model.max_acceleration, mul_up(0.5, longest))));
+}
+
+}  // namespace
+
+SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& model) {
+  const HeadingFrame none{};
+  const SensorBoxes boxes(mission, model, none);
+  const std::size_t n = mission.size();
+  SensorPriors priors;
+  TubeDomains& d = priors.domains;
+  d.px.assign(n, Interval::entire());
+  d.py.assign(n, Interval::entire());
+  d.pz.resize(n);
+  const std::size_t steps = n > 0 ? n - 1 : 0;
+  d.dx.resize(steps);
+  d.dy.resize(steps);
+  d.dz.resize(steps);
+  priors.turn_north.resize(steps);
+  priors.turn_east.resize(steps);
+  for (std::size_t k = 0; k < n; ++k) d.pz[k] = boxes.depth(k);
+  if (n == 0) return priors;
+  SensorBoxes::SampleBoxes next = boxes.sample(0);
+  for (std::size_t k = 0; k < steps; ++k) {
+    const SensorBoxes::SampleBoxes current = next;
+    next = boxes.sample(k + 1);
+    SensorBoxes::StepTurn turn;
+    const Vec3I inc = boxes.step_increment(current, next, k, &turn);
+    d.dx[k] = inc[0];
+    d.dy[k] = inc[1];
+    d.dz[k] = inc[2];
+    priors.turn_north[k] = float_up(turn.north);
+    priors.turn_east[k] = float_up(turn.east);
+    if (turn.apart_hull) priors.apart_hulls.emplace_back(k, *turn.apart_hull);
+  }
+  return priors;
+}
+
+TubeDomains sensor_domains_in(const SensorPriors& priors, const HeadingFrame& frame) {
+  TubeDomains d = priors.domains;
+  const auto margin = [&](std::size_t k) { return std::max(frame.at(k), frame.at(k + 1)); };
+  for (std::size_t k = 0; k < d.dx.size(); ++k) {
+    const double m = margin(k);
+    if (m == 0.0) continue;
+    d.dx[k] = widen(d.dx[k], turn_widening(m, priors.turn_east[k], priors.turn_north[k]));
+    d.dy[k] = widen(d.dy[k], turn_widening(m, priors.turn_north[k], priors.turn_east[k]));
+  }
+  for (const auto& [k, hull] : priors.apart_hulls) {
+    // Both boxes widen alike; where they still do not meet, the step is empty and the
+    // solver reports it.
+    const double m = margin(k);
+    d.dx[k] = intersect(d.dx[k], widen(hull[0], turn_widening(m, priors.turn_east[k], priors.turn_north[k])));
+    d.dy[k] = intersect(d.dy[k], widen(hull[1], turn_widening(m, priors.turn_north[k], priors.turn_east[k])));
+    d.dz[k] = intersect(d.dz[k], hull[2]);
+  }
+  return d;
+}
+
+std::vector<double> heading_margins_over(const Mission& mission, const TubeDomains& tube) {
+  const double zone = mission.heading_frame_margin;
+  const std::size_t n = tube.size();
+  if (zone == 0.0 || n == 0) return {};
+  const double speed = speed_bound(mission);
+  std::vector<double> reach(n);  // farthest distance from the origin within sample k's box
+  for (std::size_t k = 0; k < n; ++k) {
+    const double north = tube.px[k].mag(), east = tube.py[k].mag();
+    reach[k] = sqrt_up(add_up(mul_up(north, north), mul_up(east, east)));
+  }
+  std::vector<double> margins(n, 0.0);
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    // Within a step the robot is at most half the step's travel from one of its ends.
+    const double half_travel = mul_up(speed, mul_up(0.5, sub_up(mission.time[k + 1], mission.time[k])));
+    const double farthest = add_up(std::max(reach[k], reach[k + 1]), half_travel);
+    double step = meridian_convergence_within(mission.origin.latitude, farthest);
+    if (!(step <= zone)) step = zone;  // also when the tube is unbounded there (inf, NaN)
+    margins[k] = std::max(margins[k], step);
+    margins[k + 1] = std::max(margins[k + 1], step);
+  }
+  if (n == 1) margins[0] = std::min(zone, meridian_convergence_within(mission.origin.latitude, reach[0]));
+  return margins;
+}
+
+}  // namespace gesmi

@@ -1,0 +1,124 @@
+// The heading frame's margins against the meridian convergence GeographicLib measures
+// (solver/network/heading_frame.h, io/geodesy.h): per-sample margins over a tube
+// hold the convergence at every point the robot can reach from its boxes, and a
+// mission whose gyrocompass reads from true north keeps its truth inside the tube.
+
+#include <gtest/gtest.h>
+
+#include <GeographicLib/Constants.hpp>
+#include <GeographicLib/Geodesic.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "io/geodesy.h"
+#include "solver/mission/meridian_convergence.h"
+#include "solver/network/heading_frame.h"
+#include "solver/sim/simulator.h"
+#include "solver/solve/solve_mission.h"
+#include "tests/support/truth_checks.h"
+
+namespace gesmi::io {
+namespace {
+
+const GeoOrigin kOrigins[] = {{48.212920614, -4.458227931}, {0.0, 10.0}, {70.0, 20.0}, {-45.0, 170.0}};
+
+// The signed angle from the local frame's north axis to true north at the frame
+// point (north, east): the frame direction of a 1 m geodesic step north.
+double convergence_at(const LocalFrame& frame, double north, double east) {
+  const GeoOrigin p = frame.to_geodetic(north, east);
+  GeoOrigin q{};
+  GeographicLib::Geodesic::WGS84().Direct(p.latitude, p.longitude, 0.0, 1.0, q.latitude, q.longitude);
+  const NorthEast a = frame.to_local(p.latitude, p.longitude), b = frame.to_local(q.latitude, q.longitude);
+  return std::atan2(b.east - a.east, b.north - a.north);
+}
+
+TEST(HeadingFrameGeodesy, TheSolverUsesWgs84sSemiMajorAxis) {
+  EXPECT_EQ(kWgs84SemiMajorAxis, GeographicLib::Constants::WGS84_a());
+}
+
+TEST(HeadingFrameGeodesy, MarginsOverATubeHoldTheConvergenceWhereverTheRobotCanBe) {
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const GeoOrigin& origin : kOrigins) {
+    Mission m;
+    m.origin = origin;
+    m.heading_frame_margin = meridian_convergence_within(origin.latitude, kLocalFrameZone);
+    TubeDomains tube;
+    const std::size_t n = 300;
+    double t = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      m.time.push_back(t);
+      t += 0.1 + 3.0 * unit(random);
+      for (auto* v : {&m.roll, &m.pitch, &m.heading, &m.vy, &m.vz, &m.altitude, &m.depth}) v->push_back(0.0);
+      m.vx.push_back(2.5);
+      const double azimuth = 2 * std::numbers::pi * unit(random), distance = 9000.0 * unit(random);
+      const double half = k % 50 == 7 ? INFINITY : 0.5 + 300.0 * unit(random) * unit(random);
+      tube.px.push_back(Interval::around(distance * std::cos(azimuth), half));
+      tube.py.push_back(Interval::around(distance * std::sin(azimuth), half));
+    }
+    const std::vector<double> margins = heading_margins_over(m, tube);
+    ASSERT_EQ(margins.size(), n);
+    const LocalFrame frame(origin);
+    for (std::size_t k = 0; k < n; ++k) {
+      ASSERT_LE(margins[k], m.heading_frame_margin);
+      if (!tube.px[k].is_bounded()) {
+        EXPECT_EQ(margins[k], m.heading_frame_margin);
+        continue;
+      }
+      // The corners of the sample's box and of its neighbours', pushed away from the
+      // origin by half a step's travel at the DVL's largest speed: the farthest points
+      // the robot reaches around t_k.
+      for (std::size_t j = k == 0 ? 0 : k - 1; j <= std::min(k + 1, n - 1); ++j) {
+        if (!tube.px[j].is_bounded()) continue;
+        const std::size_t step = j < k ? j : k;
+        const double travel = step + 1 < n ? 0.5 * 2.6 * (m.time[step + 1] - m.time[step]) : 0.0;
+        for (const double north : {tube.px[j].lo(), tube.px[j].hi()})
+          for (const double east : {tube.py[j].lo(), tube.py[j].hi()}) {
+            const double r = std::hypot(north, east), stretch = (r + (j == k ? 0.0 : travel)) / r;
+            if (r + travel > kLocalFrameZone) continue;
+            const double turn = std::fabs(convergence_at(frame, north * stretch, east * stretch));
+            EXPECT_LE(turn, margins[k]) << origin.latitude << " sample " << k;
+          }
+      }
+      // No looser than the convergence due east at the farthest corner's distance, the
+      // worst direction (geodesy_test checks that bound against the whole circle).
+      double r = 0.0;
+      for (std::size_t j = k == 0 ? 0 : k - 1; j <= std::min(k + 1, n - 1); ++j)
+        r = std::max(r, std::hypot(tube.px[j].mag(), tube.py[j].mag()));
+      if (origin.latitude != 0.0 && std::isfinite(r)) {
+        EXPECT_LE(margins[k], 1.05 * std::fabs(convergence_at(frame, 0.0, std::min(r + 10.0, kLocalFrameZone))) + 1e-9)
+            << origin.latitude << " sample " << k;
+      }
+    }
+  }
+}
+
+// A simulated mission moved to 70° N, its gyrocompass reading from true north: the
+// heading differs from the frame's by up to the convergence at the true position.
+Mission true_north_mission(std::uint64_t seed) {
+  SimulationOptions o;
+  o.seed = seed;
+  o.errors = SimulatedErrors::worst_case;
+  o.duration = 2000.0;
+  Mission m = simulate_mission(o);
+  m.origin = {70.0, 20.0};
+  const LocalFrame frame(m.origin);
+  for (std::size_t k = 0; k < m.size(); ++k) m.heading[k] -= convergence_at(frame, m.truth_x[k], m.truth_y[k]);
+  set_geodetic_gps(m);
+  fill_local_gps(m, "simulated mission");
+  return m;
+}
+
+TEST(HeadingFrameGeodesy, AMissionReadingFromTrueNorthKeepsItsTruth) {
+  for (const std::uint64_t seed : {91u, 92u}) {
+    const Mission m = true_north_mission(seed);
+    const MissionSolution s = solve_mission(m);
+    ASSERT_TRUE(s.report.consistent) << s.report.message;
+    EXPECT_TRUE(test::truth_inside(m, s.domains));
+  }
+}
+
+}  // namespace
+}  // namespace gesmi::io

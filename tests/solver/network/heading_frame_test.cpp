@@ -1,0 +1,102 @@
+// The heading frame's margin applied after the build (heading_frame.h): the sensor
+// domains of a frameless build, widened for a turn of at most m, hold the exact
+// displacement of a truth whose gyrocompass reads from a north turned by any angle
+// within m, for every step model. The oracle is the truth's closed-form integral in
+// long double (tests/support/smooth_truth.h), independent of the rotations in
+// solver/model.
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "solver/network/heading_frame.h"
+#include "solver/network/sensor_boxes.h"
+#include "tests/support/smooth_truth.h"
+
+namespace gesmi {
+namespace {
+
+using test::SmoothTruth;
+
+bool holds(const Interval& x, long double value) { return x.lo() <= value && value <= x.hi(); }
+
+// Steps whose increment misses the truth's displacement, when the readings come from
+// a north turned by `turn` and the domains are widened for `margin`, per sample.
+int misses(const SmoothTruth& truth, const SensorModel& model, double turn, double heading_error,
+           const std::vector<double>& margins, std::uint64_t seed) {
+  // The gyrocompass reads psi_true = psi_local - turn, plus its error.
+  const Mission m = test::mission_of(truth, model, margins.size(), seed, heading_error - turn);
+  const TubeDomains d = sensor_domains_in(frameless_sensor_priors(m, model), HeadingFrame{0.0, margins});
+  int outside = 0;
+  for (std::size_t k = 0; k + 1 < m.size(); ++k) {
+    const auto exact = truth.displacement(m.time[k], m.time[k + 1]);
+    outside += !holds(d.dx[k], exact[0]) + !holds(d.dy[k], exact[1]) + !holds(d.dz[k], exact[2]);
+  }
+  return outside;
+}
+
+// Truths the model's step holds for: bounded jerk for the trapezoid and the rate hull,
+// constant speeds for the paper's sample model (its boxes then hold over the step).
+std::vector<SmoothTruth> truths_for(StepModel step) {
+  std::vector<SmoothTruth> all = test::truths();
+  if (step == StepModel::sample)
+    for (SmoothTruth& t : all) t.vx.amplitude = t.vy.amplitude = t.vz.amplitude = 0.0L;
+  // Near east, where a turn moves the north component by its second-order term.
+  SmoothTruth east = all.front();
+  east.heading = std::numbers::pi_v<long double> / 2 - 0.001L;
+  all.push_back(east);
+  return all;
+}
+
+TEST(HeadingFrame, TurnedIncrementsHoldTheDisplacementForEveryStepModel) {
+  std::uint64_t seed = 31;
+  for (const StepModel step : {StepModel::trapezoid, StepModel::rate_hull, StepModel::sample}) {
+    const SensorModel model = test::model_with(step, 1.0);
+    for (const SmoothTruth& truth : truths_for(step))
+      for (const double margin : {1e-3, 0.02, 0.05})
+        for (const double turn : {-margin, margin, 0.3 * margin})
+          for (const double error : {-0.99 * model.heading, 0.99 * model.heading}) {
+            std::vector<double> margins(300, margin);
+            for (std::size_t k = 0; k < margins.size(); k += 7) margins[k] = 1.5 * margin;  // per sample
+            EXPECT_EQ(misses(truth, model, turn, error, margins, seed++), 0)
+                << static_cast<int>(step) << " heading " << static_cast<double>(truth.heading) << " margin " << margin
+                << " turn " << turn << " error " << error;
+          }
+  }
+}
+
+TEST(HeadingFrame, TheTestCatchesAMarginSmallerThanTheTurn) {
+  // Negative control: the same truths turned by the margin, the domains widened for
+  // half of it (or not at all).
+  const SensorModel model = test::model_with(StepModel::trapezoid, 1.0);
+  for (const double part : {0.0, 0.5}) {
+    int outside = 0;
+    std::uint64_t seed = 41;
+    for (const SmoothTruth& truth : truths_for(StepModel::trapezoid))
+      for (const double turn : {-0.02, 0.02})
+        outside += misses(truth, model, turn, std::copysign(0.99 * model.heading, -turn),
+                          std::vector<double>(300, part * 0.02), seed++);
+    EXPECT_GT(outside, 100) << "margin at " << part << " of the turn";
+  }
+}
+
+TEST(HeadingFrame, WidensAboutAsMuchAsTurningTheHeadingBoxItself) {
+  // Tightness: widening after the build costs little against building with the heading
+  // box widened by the margin (the exact first-order effect): at most 2 % wider on
+  // every step, for a margin of 20 % of the heading bound.
+  const SensorModel model = test::model_with(StepModel::trapezoid, 1.0);
+  for (const SmoothTruth& truth : test::truths()) {
+    const Mission m = test::mission_of(truth, model, 200, 51);
+    const double margin = 0.2 * model.heading;
+    const TubeDomains after = sensor_domains_in(frameless_sensor_priors(m, model), HeadingFrame{margin, {}});
+    const SensorBoxes direct(m, model, HeadingFrame{margin, {}});
+    for (std::size_t k = 0; k + 1 < m.size(); ++k) {
+      const Vec3I d = direct.step_increment(k);
+      EXPECT_LE(after.dx[k].width(), 1.02 * d[0].width() + 1e-12) << k;
+      EXPECT_LE(after.dy[k].width(), 1.02 * d[1].width() + 1e-12) << k;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace gesmi
