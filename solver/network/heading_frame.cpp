@@ -20,28 +20,35 @@ float float_up(double x) {
 Interval widen(const Interval& x, double e) { return Interval(sub_down(x.lo(), e), add_up(x.hi(), e)); }
 
 // How far a turn by at most `margin` moves one component of a step's increment:
-// margin times the other component's integral, plus margin²/2 times its own.
+// margin times the other component's integral, plus margin²/2 times its own. All
+// terms are non-negative, so the four roundings to nearest are covered by a relative
+// 8 units in the last place, and underflow by the smallest normal number.
 double turn_widening(double margin, double other, double own) {
-  return add_up(mul_up(margin, other), mul_up(mul_up(0.5, mul_up(margin, margin)), own));
+  constexpr double up = 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
+  return (margin * other + 0.5 * margin * margin * own) * up + std::numeric_limits<double>::min();
 }
 
-// The largest |v| (m/s) the DVL boxes allow at any instant: at the samples, plus what
-// max_acceleration adds within the longest step on each axis.
-double speed_bound(const Mission& m) {
-  const SensorBoxes boxes(m, m.model, HeadingFrame{});
-  double speed = 0.0, longest = 0.0;
-  for (std::size_t k = 0; k < m.size(); ++k) {
-    const Vec3I v = boxes.velocity(k);
-    const double squares = add_up(add_up(mul_up(v[0].mag(), v[0].mag()), mul_up(v[1].mag(), v[1].mag())),
-                                  mul_up(v[2].mag(), v[2].mag()));
-    speed = std::max(speed, sqrt_up(squares));
-    if (k + 1 < m.size()) longest = std::max(longest, sub_up(m.time[k + 1], m.time[k]));
-  }
-  // sqrt(3) < 1.7321: the acceleration bound holds per axis.
-  return add_up(speed, mul_up(1.7321, mul_up(m.model.max_acceleration, mul_up(0.5, longest))));
+// |v|² over a box, rounded up (its square root is taken once, for the largest).
+double squared_norm_up(const Vec3I& v) {
+  return add_up(add_up(mul_up(v[0].mag(), v[0].mag()), mul_up(v[1].mag(), v[1].mag())), mul_up(v[2].mag(), v[2].mag()));
+}
+
+// What max_acceleration adds to |v| within the longest step, on each axis (sqrt(3) <
+// 1.7321).
+double speed_bound_from(const Mission& m, double largest_at_samples) {
+  double longest = 0.0;
+  for (std::size_t k = 0; k + 1 < m.size(); ++k) longest = std::max(longest, sub_up(m.time[k + 1], m.time[k]));
+  return add_up(largest_at_samples, mul_up(1.7321, mul_up(m.model.max_acceleration, mul_up(0.5, longest))));
 }
 
 }  // namespace
+
+double speed_bound(const Mission& m) {
+  const SensorBoxes boxes(m, m.model, HeadingFrame{});
+  double largest = 0.0;
+  for (std::size_t k = 0; k < m.size(); ++k) largest = std::max(largest, squared_norm_up(boxes.velocity(k)));
+  return speed_bound_from(m, sqrt_up(largest));
+}
 
 SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& model) {
   const HeadingFrame none{};
@@ -61,9 +68,11 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
   for (std::size_t k = 0; k < n; ++k) d.pz[k] = boxes.depth(k);
   if (n == 0) return priors;
   SensorBoxes::SampleBoxes next = boxes.sample(0);
+  double largest = squared_norm_up(next.velocity);
   for (std::size_t k = 0; k < steps; ++k) {
     const SensorBoxes::SampleBoxes current = next;
     next = boxes.sample(k + 1);
+    largest = std::max(largest, squared_norm_up(next.velocity));
     SensorBoxes::StepTurn turn;
     const Vec3I inc = boxes.step_increment(current, next, k, &turn);
     d.dx[k] = inc[0];
@@ -73,6 +82,7 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
     priors.turn_east[k] = float_up(turn.east);
     if (turn.apart_hull) priors.apart_hulls.emplace_back(k, *turn.apart_hull);
   }
+  priors.max_speed = speed_bound_from(mission, sqrt_up(largest));
   return priors;
 }
 
@@ -97,10 +107,14 @@ TubeDomains sensor_domains_in(const SensorPriors& priors, const HeadingFrame& fr
 }
 
 std::vector<double> heading_margins_over(const Mission& mission, const TubeDomains& tube) {
+  if (mission.heading_frame_margin == 0.0) return {};
+  return heading_margins_over(mission, tube, speed_bound(mission));
+}
+
+std::vector<double> heading_margins_over(const Mission& mission, const TubeDomains& tube, double speed) {
   const double zone = mission.heading_frame_margin;
   const std::size_t n = tube.size();
   if (zone == 0.0 || n == 0) return {};
-  const double speed = speed_bound(mission);
   std::vector<double> reach(n);  // farthest distance from the origin within sample k's box
   for (std::size_t k = 0; k < n; ++k) {
     const double north = tube.px[k].mag(), east = tube.py[k].mag();

@@ -66,11 +66,13 @@ SensorPriors build_priors(const Mission& mission, MissionSolution& s) {
 
 // The per-sample margins over a first pass's tube (heading_frame.h), or none when the
 // mission has no frame margin or that pass found no solution.
-bool narrow_frame(const Mission& mission, const TubeDomains& tube, bool consistent, std::vector<double>& margins,
-                  HeadingFrame& frame) {
+bool narrow_frame(const Mission& mission, const SensorPriors& priors, const TubeDomains& tube, bool consistent,
+                  std::vector<double>& margins, HeadingFrame& frame, MissionSolution& s) {
   if (!consistent || frame.uniform == 0.0) return false;
-  margins = heading_margins_over(mission, tube);
+  const auto start = Clock::now();
+  margins = heading_margins_over(mission, tube, priors.max_speed);
   frame.per_sample = margins;
+  s.timings_ms["build"] += elapsed_ms(start);
   return true;
 }
 
@@ -80,15 +82,15 @@ void solve_cold(const Mission& mission, std::span<const PositionFix> fixes, cons
   HeadingFrame frame = zone_frame(mission);
   std::vector<double> margins;
   Pass pass = build_pass(mission, fixes, priors, frame, s);
-  s.domains = pass.sensor;
+  s.domains = std::move(pass.sensor);
   add_network_priors(s.domains, pass.net);
   auto start = Clock::now();
   take_propagation(s.report, solve(pass.net, s.domains, options.propagation));
   s.timings_ms["propagate"] = elapsed_ms(start);
-  if (narrow_frame(mission, s.domains, s.report.consistent, margins, frame)) {
+  if (narrow_frame(mission, priors, s.domains, s.report.consistent, margins, frame, s)) {
     const int first_sweeps = s.report.sweeps;
     pass = build_pass(mission, fixes, priors, frame, s);
-    TubeDomains narrowed = pass.sensor;
+    TubeDomains narrowed = std::move(pass.sensor);
     add_network_priors(narrowed, pass.net);
     intersect_with(narrowed, s.domains);  // the first pass's enclosure holds under a looser model
     s.domains = std::move(narrowed);
@@ -100,7 +102,7 @@ void solve_cold(const Mission& mission, std::span<const PositionFix> fixes, cons
   net = std::move(pass.net);
   if (s.report.consistent || !options.diagnose) return;
   start = Clock::now();
-  s.report.explained_by = diagnose(net, pass.sensor, options.propagation);
+  s.report.explained_by = diagnose(net, sensor_domains_in(priors, frame), options.propagation);
   s.timings_ms["diagnose"] = elapsed_ms(start);
 }
 
@@ -120,7 +122,7 @@ void solve_outliers(const Mission& mission, std::span<const PositionFix> fixes, 
   s.timings_ms["propagate"] = elapsed_ms(start);
   // The enclosure of either mode holds the truth under that mode's premise, and so do
   // the margins over it; the second pass solves afresh under them.
-  if (narrow_frame(mission, s.domains, r.consistent(), margins, frame)) {
+  if (narrow_frame(mission, priors, s.domains, r.consistent(), margins, frame, s)) {
     pass = build_pass(mission, fixes, priors, frame, s);
     start = Clock::now();
     r = solve_with_outliers(pass.net, pass.sensor, s.domains, o);

@@ -9,9 +9,11 @@
 
 #include <map>
 
+#include "solver/mission/meridian_convergence.h"
 #include "solver/network/incremental_solver.h"
 #include "solver/network/outlier_solver.h"
 #include "solver/sim/simulator.h"
+#include "solver/solve/solve_mission.h"
 
 namespace {
 
@@ -71,6 +73,21 @@ void BM_SensorEnclosures(benchmark::State& state) {
   state.counters["steps"] = static_cast<double>(m.size());
 }
 BENCHMARK(BM_SensorEnclosures)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+// The whole library solve (solve_mission: sensor enclosures, network, propagation; no
+// waterfall). Arg 0: the simulator's mission, whose headings are in the local frame (no
+// frame margin, one pass); arg 1: with the zone-wide margin io/ sets at the reference
+// origin, so that the solve runs its two passes (docs/model.md, "The local frame's north").
+void BM_SolveMission(benchmark::State& state) {
+  Mission m = reference().mission;
+  if (state.range(0) == 1) m.heading_frame_margin = meridian_convergence_within(48.212920614, 10000.0);
+  SolveOptions options;
+  options.waterfall = false;
+  options.diagnose = false;
+  for (auto _ : state) benchmark::DoNotOptimize(solve_mission(m, options).domains.px.data());
+  state.counters["steps"] = static_cast<double>(m.size());
+}
+BENCHMARK(BM_SolveMission)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // Cold propagation on missions of 10^5, 10^6 and 10^7 steps (the survey repeated).
 void BM_ColdSolveScaling(benchmark::State& state) {
