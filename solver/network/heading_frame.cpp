@@ -12,6 +12,8 @@ namespace gesmi {
 namespace {
 
 float float_up(double x) {
+  // Beyond the float range (or NaN) the conversion is undefined: take infinity.
+  if (!(x <= std::numeric_limits<float>::max())) return std::numeric_limits<float>::infinity();
   float f = static_cast<float>(x);
   if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
   return f;
@@ -35,10 +37,10 @@ double squared_norm_up(const Vec3I& v) {
 
 // What max_acceleration adds to |v| within the longest step, on each axis (sqrt(3) <
 // 1.7321).
-double speed_bound_from(const Mission& m, double largest_at_samples) {
+double speed_bound_from(const Mission& m, const SensorModel& model, double largest_at_samples) {
   double longest = 0.0;
   for (std::size_t k = 0; k + 1 < m.size(); ++k) longest = std::max(longest, sub_up(m.time[k + 1], m.time[k]));
-  return add_up(largest_at_samples, mul_up(1.7321, mul_up(m.model.max_acceleration, mul_up(0.5, longest))));
+  return add_up(largest_at_samples, mul_up(1.7321, mul_up(model.max_acceleration, mul_up(0.5, longest))));
 }
 
 }  // namespace
@@ -47,7 +49,7 @@ double speed_bound(const Mission& m) {
   const SensorBoxes boxes(m, m.model, HeadingFrame{});
   double largest = 0.0;
   for (std::size_t k = 0; k < m.size(); ++k) largest = std::max(largest, squared_norm_up(boxes.velocity(k)));
-  return speed_bound_from(m, sqrt_up(largest));
+  return speed_bound_from(m, m.model, sqrt_up(largest));
 }
 
 SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& model) {
@@ -82,7 +84,7 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
     priors.turn_east[k] = float_up(turn.east);
     if (turn.apart_hull) priors.apart_hulls.emplace_back(k, *turn.apart_hull);
   }
-  priors.max_speed = speed_bound_from(mission, sqrt_up(largest));
+  priors.max_speed = speed_bound_from(mission, model, sqrt_up(largest));
   return priors;
 }
 
