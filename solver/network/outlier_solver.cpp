@@ -23,17 +23,7 @@ void hull_into(TubeDomains& acc, const TubeDomains& d, bool first) {
     acc = d;
     return;
   }
-  const auto merge = [](std::vector<Interval>& a, const std::vector<Interval>& b) {
-    for (std::size_t k = 0; k < a.size(); ++k) a[k] = hull(a[k], b[k]);
-  };
-  merge(acc.px, d.px);
-  merge(acc.py, d.py);
-  merge(acc.pz, d.pz);
-  merge(acc.dx, d.dx);
-  merge(acc.dy, d.dy);
-  merge(acc.dz, d.dz);
-  for (std::size_t i = 0; i < acc.mines.size(); ++i)
-    for (int c = 0; c < 3; ++c) acc.mines[i][c] = hull(acc.mines[i][c], d.mines[i][c]);
+  combine_domains(acc, d, [](const Interval& a, const Interval& b) { return hull(a, b); });
 }
 
 // The removable constraint ids: every detection, and every fix unless trusted.

@@ -23,6 +23,23 @@ struct TubeDomains {
   double max_horizontal_width() const;
 };
 
+/// Replaces every interval domain of `into` (positions, increments, mines) by
+/// op(it, the same one of `other`); both of the same mission and network.
+template <class Op>
+void combine_domains(TubeDomains& into, const TubeDomains& other, Op op) {
+  const auto each = [&](std::vector<Interval>& a, const std::vector<Interval>& b) {
+    for (std::size_t k = 0; k < a.size(); ++k) a[k] = op(a[k], b[k]);
+  };
+  each(into.px, other.px);
+  each(into.py, other.py);
+  each(into.pz, other.pz);
+  each(into.dx, other.dx);
+  each(into.dy, other.dy);
+  each(into.dz, other.dz);
+  for (std::size_t i = 0; i < into.mines.size(); ++i)
+    for (int a = 0; a < 3; ++a) into.mines[i][a] = op(into.mines[i][a], other.mines[i][a]);
+}
+
 /// Intersects every domain of `into` with the same one of `other` (same mission and
 /// network) and keeps only the candidate mines both allow. Empty results stay for the
 /// solver to report.
