@@ -1,7 +1,7 @@
 #pragma once
-// The files `gesmi solve -o RESULT.h5` writes: the result and, beside it, the mine
-// boxes as CSV (RESULT.mines.csv), GeoJSON (RESULT.geojson) and the envelope picture
-// (RESULT.envelope.png).
+// The files `gesmi solve -o RESULT.h5` writes: the result and, beside it when asked,
+// the mine boxes as CSV (RESULT.mines.csv), GeoJSON (RESULT.geojson) and the envelope
+// picture (RESULT.envelope.png).
 
 #include <string>
 #include <vector>
@@ -14,9 +14,16 @@ namespace gesmi::io {
 /// RESULT.mines.csv, RESULT.geojson, RESULT.envelope.png for a result path.
 std::vector<std::string> solve_output_siblings(const std::string& result_path);
 
-/// Writes the result and its siblings (each atomically; inside an OutputSet, as one
-/// set); `mission_name` titles the picture. Returns the paths written.
+/// The siblings to write beside the result.
+struct SolveSiblings {
+  bool mines_csv = false, geojson = false, envelope_png = false;
+};
+
+/// Writes the result and the asked siblings (each atomically; inside an OutputSet, as
+/// one set); `mission_name` titles the picture. Returns the paths written, the result
+/// first.
 std::vector<std::string> write_solve_outputs(const SolveResult& result, const Mission& mission,
-                                             const std::string& result_path, const std::string& mission_name);
+                                             const std::string& result_path, const std::string& mission_name,
+                                             const SolveSiblings& siblings);
 
 }  // namespace gesmi::io

@@ -26,7 +26,10 @@ def test_a_solve_from_python_equals_the_command_bit_for_bit(mission_file, tmp_pa
     s = gesmi.solve(m)
     py = str(tmp_path / "py.h5")
     written = gesmi.write_result(s, m, py, "m.h5")
-    assert written[0] == py and len(written) == 4
+    assert written == [py]
+    everything = gesmi.write_result(s, m, str(tmp_path / "all.h5"), "m.h5", png=True, geojson=True, mines_csv=True)
+    assert [os.path.basename(p) for p in everything] == ["all.h5", "all.mines.csv", "all.geojson", "all.envelope.png"]
+    assert all(os.path.getsize(p) > 0 for p in everything)
     a, a_attrs = datasets(cli)
     b, b_attrs = datasets(py)
     assert a.keys() == b.keys()

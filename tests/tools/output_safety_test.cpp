@@ -104,7 +104,8 @@ TEST(OutputSafety, AFailingWriteLeavesNoneOfTheNewFiles) {
     SCOPED_TRACE(failing);
     const std::string folder = temp_folder("outputs-fail");
     const CommandResult r =
-        run_shell("GESMI_TEST_FAIL_WRITE=" + failing + " $GESMI solve '" + mission() + "' -o '" + folder + "/r.h5'");
+        run_shell("GESMI_TEST_FAIL_WRITE=" + failing + " $GESMI solve '" + mission() + "' -o '" + folder +
+                  "/r.h5' --png --geojson --mines-csv");
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_EQ(line_count(r.err), 1) << r.err;
     EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
@@ -134,10 +135,10 @@ TEST(OutputSafety, AFullDiskIsBadInputAndLeavesNothing) {
   ::umount(tiny.c_str());
   const std::string scenario = source_dir() + "/missions/localization/triangle_two_hypotheses.yaml";
   const std::vector<std::pair<std::string, std::vector<std::string>>> runs = {
-      {"96k", {"solve", mission(), "-o", tiny + "/r.h5"}},
-      {"1000k", {"solve", mission(), "-o", tiny + "/r.h5"}},
-      {"1200k", {"solve", mission(), "-o", tiny + "/r.h5"}},
-      {"1280k", {"solve", mission(), "-o", tiny + "/r.h5"}},
+      {"96k", {"solve", mission(), "-o", tiny + "/r.h5", "--png", "--geojson", "--mines-csv"}},
+      {"1000k", {"solve", mission(), "-o", tiny + "/r.h5", "--png", "--geojson", "--mines-csv"}},
+      {"1200k", {"solve", mission(), "-o", tiny + "/r.h5", "--png", "--geojson", "--mines-csv"}},
+      {"1280k", {"solve", mission(), "-o", tiny + "/r.h5", "--png", "--geojson", "--mines-csv"}},
       {"64k", {"simulate", "--seed", "4", "--duration", "600", "-o", tiny + "/m.h5"}},
       {"64k", {"export", mission(), "-o", tiny + "/csv"}},
       {"64k", {"export", mission(), "--format", "gesmi-txt", "-o", tiny + "/log.txt"}},
@@ -184,8 +185,8 @@ TEST(OutputSafety, AnInterruptRemovesTheTemporariesAndExitsWith128PlusTheSignal)
   for (const int sig : {SIGTERM, SIGINT}) {
     SCOPED_TRACE(sig);
     const std::string folder = temp_folder("outputs-signal");
-    const pid_t pid = spawn_gesmi({"solve", mission(), "-o", folder + "/r.h5"}, "GESMI_TEST_PAUSE_BEFORE_COMMIT=10");
-    // Wait until the four temporaries are complete and the set holds them.
+    const pid_t pid = spawn_gesmi({"solve", mission(), "-o", folder + "/r.h5", "--png"}, "GESMI_TEST_PAUSE_BEFORE_COMMIT=10");
+    // Wait until both temporaries (the result, then the picture) are complete and the set holds them.
     const std::string temp = folder + "/r.envelope.png.tmp-" + std::to_string(pid);
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (!fs::exists(temp) && std::chrono::steady_clock::now() < deadline)

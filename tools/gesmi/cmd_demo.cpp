@@ -44,7 +44,7 @@ int run_demo(std::span<const std::string> args) {
   const auto start = std::chrono::steady_clock::now();
   if (const int code = run_command("simulate", {"--preset", "redermor", "--seed", std::to_string(seed), "-o", mission}))
     return code;
-  const int solved = run_command("solve", {mission, "-o", result});
+  const int solved = run_command("solve", {mission, "-o", result, "--png", "--geojson", "--mines-csv"});
   if (solved != kExitOk && solved != kExitInconsistent) return solved;
   if (const int code = run_command("waterfall", {result, "-o", dir + "/waterfall.png"})) return code;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,6 +1,6 @@
 // gesmi solve: the interval solver on a mission (cold, warm from an earlier result,
-// or tolerating outliers), writing the result file, the mine boxes as CSV, GeoJSON
-// and the envelope picture. The solve itself is solve_mission (solver/solve/).
+// or tolerating outliers), writing the result file and, when asked, the mine boxes as
+// CSV, GeoJSON and the envelope picture. The solve itself is solve_mission (solver/solve/).
 
 #include <chrono>
 #include <cstdio>
@@ -70,15 +70,16 @@ int run_solve(std::span<const std::string> args) {
   result.marks_digest = io::marks_digest(mission, mission.mark_count());
   result.version = std::string(io::version());
   result.solution.timings_ms = timings;
-  io::write_solve_outputs(result, mission, output, std::filesystem::path(mission_path).filename().string());
+  const std::vector<std::string> written = io::write_solve_outputs(
+      result, mission, output, std::filesystem::path(mission_path).filename().string(), parse_solve_siblings(v));
   outputs.commit();
   timings["write"] = elapsed_ms(start);
 
   print_solve_notes(s);
   if (v.count("stats"))
-    print_solve_stats(mission, s, timings);
+    print_solve_stats(mission, s, timings, written);
   else
-    print_solve_summary(mission, s, output);
+    print_solve_summary(mission, s, written);
   if (s.report.consistent) return kExitOk;
   std::fprintf(stderr, "gesmi solve: inconsistent data: %s\n", s.report.message.c_str());
   return kExitInconsistent;

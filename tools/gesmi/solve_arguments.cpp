@@ -26,7 +26,10 @@ po::options_description solve_options() {
        "CONDITIONAL: the hull over the smallest sets (q* <= Q) of marks or fixes whose removal restores "
        "consistency; it contains the truth only if exactly q* inputs are wrong")
       ("trust-gps", "GPS fixes are never outliers: only marks are tolerated as wrong")
-      ("mines", po::value<std::string>(), "number of mines K (default: the mission's)");
+      ("mines", po::value<std::string>(), "number of mines K (default: the mission's)")
+      ("png", "also draw the envelope and mine boxes: RESULT.envelope.png")
+      ("geojson", "also write the mine boxes and envelope as GeoJSON: RESULT.geojson")
+      ("mines-csv", "also write the mine boxes as CSV: RESULT.mines.csv");
   return options;
 }
 
@@ -49,6 +52,14 @@ SolveOptions parse_solve_options(const po::variables_map& v) {
   if (o.trust_gps && o.max_outliers < 0) throw UsageError("--trust-gps goes with --max-outliers or --minimal-outliers");
   if (v.count("from") && o.max_outliers >= 0) throw UsageError("--from and --max-outliers cannot be combined");
   return o;
+}
+
+io::SolveSiblings parse_solve_siblings(const po::variables_map& v) {
+  io::SolveSiblings s;
+  s.envelope_png = v.count("png") > 0;
+  s.geojson = v.count("geojson") > 0;
+  s.mines_csv = v.count("mines-csv") > 0;
+  return s;
 }
 
 void apply_mine_count(const po::variables_map& v, Mission& mission) {

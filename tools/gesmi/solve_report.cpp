@@ -23,7 +23,7 @@ void print_solve_notes(const MissionSolution& s) {
   }
 }
 
-void print_solve_summary(const Mission& m, const MissionSolution& s, const std::string& output) {
+void print_solve_summary(const Mission& m, const MissionSolution& s, const std::vector<std::string>& written) {
   // Marks without a mine number, in time order: the mines still possible.
   std::vector<std::size_t> rows(m.mark_count());
   std::iota(rows.begin(), rows.end(), std::size_t{0});
@@ -37,19 +37,24 @@ void print_solve_summary(const Mission& m, const MissionSolution& s, const std::
     std::printf("mark %zu at t = %.1f s: %s %s\n", j, m.mark_time[j], count == 1 ? "mine" : (count == 0 ? "no mine" : "mines"),
                 mines.c_str());
   }
+  std::string files;
+  for (const std::string& f : written) files += (files.empty() ? "" : ", ") + f;
   std::printf("%s: %s after %d sweeps, largest horizontal tube width %.1f m, written to %s\n",
               solve_mode_name(s.report.mode), s.report.consistent ? "consistent" : "INCONSISTENT", s.report.sweeps,
-              s.domains.max_horizontal_width(), output.c_str());
+              s.domains.max_horizontal_width(), files.c_str());
 }
 
-void print_solve_stats(const Mission& m, const MissionSolution& s, const std::map<std::string, double>& timings) {
+void print_solve_stats(const Mission& m, const MissionSolution& s, const std::map<std::string, double>& timings,
+                       const std::vector<std::string>& written) {
   std::string json = "{\"status\": " + json_string(s.report.consistent ? "consistent" : "inconsistent") +
                      ", \"mode\": " + json_string(solve_mode_name(s.report.mode)) +
                      ", \"sweeps\": " + std::to_string(s.report.sweeps) +
                      ", \"converged\": " + (s.report.converged ? "true" : "false") +
                      ", \"steps\": " + std::to_string(m.size()) + ", \"marks\": " + std::to_string(m.mark_count()) +
                      ", \"max_tube_width_m\": " + json_number(s.domains.max_horizontal_width()) +
-                     ", \"work_items\": " + std::to_string(s.report.work_items) + ", \"timings_ms\": {";
+                     ", \"work_items\": " + std::to_string(s.report.work_items) + ", \"files\": [";
+  for (std::size_t i = 0; i < written.size(); ++i) json += (i ? ", " : "") + json_string(written[i]);
+  json += "], \"timings_ms\": {";
   bool first = true;
   for (const auto& [name, ms] : timings) {
     json += (first ? "" : ", ") + json_string(name) + ": " + json_number(ms);

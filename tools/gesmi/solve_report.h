@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include "solver/mission/mission.h"
 #include "solver/solve/mission_solution.h"
@@ -12,9 +13,10 @@ namespace gesmi::cli {
 
 /// Notes for the operator on stderr: a warm rerun solved cold, the hypotheses at q*.
 void print_solve_notes(const MissionSolution& solution);
-/// The candidates of unnumbered marks and the summary line (stdout).
-void print_solve_summary(const Mission& mission, const MissionSolution& solution, const std::string& output);
-/// The --stats JSON object (stdout), timings included.
-void print_solve_stats(const Mission& mission, const MissionSolution& solution, const std::map<std::string, double>& timings);
+/// The candidates of unnumbered marks and the summary line naming the files written (stdout).
+void print_solve_summary(const Mission& mission, const MissionSolution& solution, const std::vector<std::string>& written);
+/// The --stats JSON object (stdout), timings and the files written included.
+void print_solve_stats(const Mission& mission, const MissionSolution& solution, const std::map<std::string, double>& timings,
+                       const std::vector<std::string>& written);
 
 }  // namespace gesmi::cli

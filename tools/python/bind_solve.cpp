@@ -166,11 +166,14 @@ void bind_solve(py::module_& m) {
         "Reads a result file as the warm start of a solve of `mission` (as `gesmi solve --from`)");
   m.def(
       "write_result",
-      [](const MissionSolution& s, const Mission& mission, const std::string& path, const std::string& mission_name) {
-        return io::write_solve_outputs(as_result(s, mission), mission, path, mission_name);
+      [](const MissionSolution& s, const Mission& mission, const std::string& path, const std::string& mission_name,
+         bool png, bool geojson, bool mines_csv) {
+        return io::write_solve_outputs(as_result(s, mission), mission, path, mission_name,
+                                       io::SolveSiblings{mines_csv, geojson, png});
       },
       py::arg("solution"), py::arg("mission"), py::arg("path"), py::arg("mission_name") = "mission",
-      "Writes the result and its siblings exactly as `gesmi solve` does; returns the paths written");
+      py::arg("png") = false, py::arg("geojson") = false, py::arg("mines_csv") = false,
+      "Writes the result, and the siblings asked for, exactly as `gesmi solve` does; returns the paths written");
 }
 
 }  // namespace gesmi::python
