@@ -1,0 +1,118 @@
+#!/usr/bin/python3
+"""Whole-process cost of the gesmi commands (docs/performance.md, "Whole process"):
+each command run as a process, several times, with its CPU time (user + system, from
+wait4), wall time and peak resident memory; the median of the runs is printed as a
+Markdown table. Missions: the reference-like one (59,995 steps) and, with --sizes,
+10^6 and 10^7 steps (the survey repeated).
+
+    tools/bench/whole_process.py [--gesmi build/bin/gesmi] [--runs 5] [--sizes ref 1e6 1e7]
+                                 [--only solve warm ...] [--keep DIR]
+
+The operator iteration is `marks add` + `solve --from` + `waterfall` + `candidates`
+after one missed mark is found (the simulator's first missed mark, its true range).
+"""
+import argparse
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+import h5py
+
+SIZES = {"ref": 5999.4, "1e6": 100000.0, "1e7": 1000000.0}  # simulated seconds at 10 Hz
+
+
+def run(command, quiet=True):
+    """One process: (CPU s, wall s, peak RSS MB). Exit codes 0 and 3 count as done."""
+    start = time.perf_counter()
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL if quiet else None, stderr=subprocess.PIPE)
+    _, status, usage = os.wait4(process.pid, 0)
+    wall = time.perf_counter() - start
+    code = os.waitstatus_to_exitcode(status)
+    if code not in (0, 3):
+        sys.exit(f"whole_process: {' '.join(command)} exited {code}: {process.stderr.read().decode().strip()}")
+    process.stderr.close()
+    return usage.ru_utime + usage.ru_stime, wall, usage.ru_maxrss / 1024.0
+
+
+def median_of(runs, command, fresh=None):
+    """Median CPU, wall and peak over the runs; `fresh` (a folder) is removed before each."""
+    samples = []
+    for _ in range(runs):
+        if fresh:
+            shutil.rmtree(fresh, ignore_errors=True)
+        samples.append(run(command))
+    return tuple(statistics.median(s[i] for s in samples) for i in range(3))
+
+
+def first_missed_mark(mission):
+    with h5py.File(mission, "r") as f:
+        t, _, r = f["truth/missed_marks"][0]
+    return float(t), float(r)
+
+
+def commands(gesmi, folder, mission):
+    """(name, argv, setup argv or None, folder to remove before each run or None), in the
+    order a user runs them."""
+    result, warm_mission = f"{folder}/r.h5", f"{folder}/m2.h5"
+    t, r = first_missed_mark(mission)
+    add = [gesmi, "marks", "add", mission, "--time", repr(t), "--range", repr(r), "-o", warm_mission]
+    return [
+        ("solve", [gesmi, "solve", mission, "-o", result], None, None),
+        ("solve --png --geojson --mines-csv", [gesmi, "solve", mission, "-o", f"{folder}/all.h5", "--png", "--geojson",
+                                               "--mines-csv"], None, None),
+        ("marks add", add, None, None),
+        ("solve --from (one added mark)", [gesmi, "solve", warm_mission, "--from", result, "-o", f"{folder}/w.h5"], add,
+         None),
+        ("waterfall", [gesmi, "waterfall", result, "-o", f"{folder}/wf.png"], None, None),
+        ("candidates", [gesmi, "candidates", result], None, None),
+        ("kalman", [gesmi, "kalman", mission, "-o", f"{folder}/k.h5"], None, None),
+        ("export csv", [gesmi, "export", mission, "-o", f"{folder}/csv"], None, f"{folder}/csv"),
+    ]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--gesmi", default="build/bin/gesmi")
+    parser.add_argument("--runs", type=int, default=5)
+    parser.add_argument("--sizes", nargs="+", default=["ref"], choices=list(SIZES))
+    parser.add_argument("--only", nargs="+", help="command names to time (prefixes of the table's names)")
+    parser.add_argument("--keep", help="folder for the files (default: a temporary one, removed)")
+    args = parser.parse_args()
+    gesmi = os.path.abspath(args.gesmi)
+    folder = args.keep or tempfile.mkdtemp(prefix="gesmi-whole-")
+    os.makedirs(folder, exist_ok=True)
+    print("| command | steps | CPU (s) | wall (s) | peak memory (MB) | runs |")
+    print("|---|---:|---:|---:|---:|---:|")
+    try:
+        for size in args.sizes:
+            mission = f"{folder}/m-{size}.h5"
+            simulate = [gesmi, "simulate", "--preset", "redermor", "--seed", "1", "--missed", "0.3", "--duration",
+                        repr(SIZES[size]), "-o", mission]
+            cpu, wall, peak = run(simulate)
+            with h5py.File(mission, "r") as f:
+                steps = f["nav/time"].shape[0]
+            print(f"| simulate | {steps:,} | {cpu:.3f} | {wall:.3f} | {peak:.0f} | 1 |", flush=True)
+            runs = args.runs if size == "ref" else 1
+            operator = [0.0, 0.0]
+            for name, command, setup, fresh in commands(gesmi, folder, mission):
+                if args.only and not any(name.startswith(o) for o in args.only):
+                    continue
+                if setup:
+                    run(setup)
+                cpu, wall, peak = median_of(runs, command, fresh)
+                if name in ("marks add", "solve --from (one added mark)", "waterfall", "candidates"):
+                    operator = [operator[0] + cpu, operator[1] + wall]
+                print(f"| {name} | {steps:,} | {cpu:.3f} | {wall:.3f} | {peak:.0f} | {runs} |", flush=True)
+            if not args.only:
+                print(f"| operator iteration (the four above) | {steps:,} | {operator[0]:.3f} | {operator[1]:.3f} | | |")
+    finally:
+        if not args.keep:
+            shutil.rmtree(folder, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
