@@ -1,10 +1,14 @@
 #include "io/plot/canvas.h"
 
 #include <cairo.h>
+#include <png.h>
 
 #include <cmath>
-#include <numbers>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <numbers>
+#include <vector>
 
 #include "io/output/atomic_output.h"
 #include "io/format_error.h"
@@ -24,9 +28,12 @@ Canvas::~Canvas() {
 }
 
 void Canvas::fill_rect(double x, double y, double w, double h, Rgb c, double alpha) {
+  const double x0 = std::floor(x), y0 = std::floor(y), x1 = std::ceil(x + w), y1 = std::ceil(y + h);
   cairo_set_source_rgba(cr_, c.r, c.g, c.b, alpha);
-  cairo_rectangle(cr_, x, y, w, h);
+  cairo_set_antialias(cr_, CAIRO_ANTIALIAS_NONE);
+  cairo_rectangle(cr_, x0, y0, std::max(x1 - x0, 1.0), std::max(y1 - y0, 1.0));
   cairo_fill(cr_);
+  cairo_set_antialias(cr_, CAIRO_ANTIALIAS_DEFAULT);
 }
 
 void Canvas::stroke_rect(double x, double y, double w, double h, Rgb c, double line_width) {
@@ -101,8 +108,30 @@ void Canvas::axes(const DataFrame& f, const std::string& x_label, const std::str
 void Canvas::save_png(const std::string& path) {
   AtomicOutput out(path);
   cairo_surface_flush(surface_);
-  if (cairo_surface_write_to_png(surface_, out.temp_path().c_str()) != CAIRO_STATUS_SUCCESS)
-    throw FormatError(path + ": cannot write the PNG picture (disk full?)");
+  // Cairo's RGB24 pixels are 32-bit words 0x00RRGGBB in native order: repack as RGB bytes.
+  const int width = cairo_image_surface_get_width(surface_), height = cairo_image_surface_get_height(surface_);
+  const int stride = cairo_image_surface_get_stride(surface_);
+  const unsigned char* data = cairo_image_surface_get_data(surface_);
+  std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
+  for (int row = 0; row < height; ++row)
+    for (int col = 0; col < width; ++col) {
+      std::uint32_t word;
+      std::memcpy(&word, data + static_cast<std::ptrdiff_t>(row) * stride + col * 4, sizeof word);
+      unsigned char* o = &rgb[(static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(col)) * 3];
+      o[0] = static_cast<unsigned char>(word >> 16);
+      o[1] = static_cast<unsigned char>(word >> 8);
+      o[2] = static_cast<unsigned char>(word);
+    }
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = static_cast<png_uint_32>(width);
+  image.height = static_cast<png_uint_32>(height);
+  image.format = PNG_FORMAT_RGB;
+  image.flags = PNG_IMAGE_FLAG_FAST;
+  const bool written = png_image_write_to_file(&image, out.temp_path().c_str(), 0, rgb.data(), width * 3, nullptr) != 0;
+  png_image_free(&image);
+  if (!written) throw FormatError(path + ": cannot write the PNG picture (disk full?)");
   out.commit();
 }
 

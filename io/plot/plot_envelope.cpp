@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "io/plot/canvas.h"
+#include "io/plot/tube_runs.h"
 
 namespace gesmi::io {
 namespace {
@@ -36,19 +37,8 @@ void write_envelope_png(const EnvelopePicture& pic, const std::string& path) {
   const DataFrame f{ce - span / 2, ce + span / 2, cn - span / 2, cn + span / 2, 80, 30, size, size - 20, false};
   const Rgb tube{0.72, 0.72, 0.72}, mine{0.0, 0.0, 0.0}, truth{0.1, 0.3, 0.9}, fix{0.85, 0.1, 0.1};
 
-  // The tube: consecutive boxes merged into one per pixel of track, so the picture
-  // does not depend on the sampling rate.
-  const std::size_t stride = std::max<std::size_t>(1, d.size() / 20000);
-  for (std::size_t k = 0; k < d.size(); k += stride) {
-    Interval north = d.px[k], east = d.py[k];
-    for (std::size_t j = k + 1; j < std::min(d.size(), k + stride); ++j) {
-      north = hull(north, d.px[j]);
-      east = hull(east, d.py[j]);
-    }
-    if (!north.is_bounded() || !east.is_bounded()) continue;
-    const double x0 = f.px(east.lo()), x1 = f.px(east.hi()), y0 = f.py(north.hi()), y1 = f.py(north.lo());
-    canvas.fill_rect(x0, y0, std::max(x1 - x0, 0.8), std::max(y1 - y0, 0.8), tube);
-  }
+  // The tube: a rectangle per run of boxes (tube_runs.h), not per sample.
+  for (const PixelBox& r : tube_runs(f, d)) canvas.fill_rect(r.x0, r.y0, r.width(), r.height(), tube);
   if (pic.mission && pic.mission->has_truth()) {
     const Mission& m = *pic.mission;
     const std::size_t step = std::max<std::size_t>(1, m.size() / 5000);
