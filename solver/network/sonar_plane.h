@@ -34,4 +34,9 @@ struct SonarPlane {
 /// Distance between the points of two boxes, as an interval.
 Interval box_distance(const Vec3I& a, const Vec3I& b);
 
+/// True only when every point of `a` is farther than `reach` from every point of `b`,
+/// decided in plain doubles (a cheap test before box_distance; false when unsure; an
+/// empty box, which has no point, is beyond anything).
+bool boxes_beyond(const Vec3I& a, const Vec3I& b, double reach);
+
 }  // namespace gesmi

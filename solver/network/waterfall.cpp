@@ -1,6 +1,8 @@
 #include "solver/network/waterfall.h"
 
+#include <algorithm>
 #include <limits>
+#include <thread>
 
 #include "solver/network/sonar_plane.h"
 #include "solver/network/sensor_boxes.h"
@@ -16,6 +18,9 @@ Interval feasible_ranges(SonarPlane plane, const Vec3I& position, const Vec3I& m
   return range;
 }
 
+// Fewer steps than this per thread are not worth a thread.
+constexpr std::size_t kStepsPerThread = 20000;
+
 }  // namespace
 
 Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains) {
@@ -29,29 +34,44 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
   w.lower.assign(w.steps * w.mines, nan);
   w.upper.assign(w.steps * w.mines, nan);
   const Interval swath(0.0, model.sonar_max_range);
-  for (std::size_t k = 0; k < w.steps; ++k) {
-    const Vec3I p = domains.position(k);
-    SonarPlane plane;
-    plane.attitude = make_attitude(boxes.roll(k), boxes.pitch(k), boxes.heading(k));
-    plane.altitude = boxes.altitude(k);
-    plane.along_tolerance = model.along_track_tolerance;
-    plane.depth_band = model.mine_depth_band;
-    for (std::size_t i = 0; i < w.mines; ++i) {
-      const Vec3I& m = domains.mines[i];
-      // Cheap rejection: the boxes are farther apart than the sonar reaches.
-      const Interval distance = box_distance(p, m);
-      if (!distance.intersects(swath)) continue;
-      const Interval reach = intersect(distance, swath);
-      Interval ranges = Interval::empty();
-      for (const SonarSide side : {SonarSide::starboard, SonarSide::port}) {
-        if (model.sonar_side != SonarSide::both && model.sonar_side != side) continue;
-        ranges = hull(ranges, feasible_ranges(plane, p, m, reach, side));
+  // Steps [first, last): each thread writes its own rows.
+  const auto rows = [&](std::size_t first, std::size_t last) {
+    std::vector<std::size_t> near;
+    for (std::size_t k = first; k < last; ++k) {
+      const Vec3I p = domains.position(k);
+      near.clear();
+      for (std::size_t i = 0; i < w.mines; ++i)
+        if (!boxes_beyond(p, domains.mines[i], model.sonar_max_range)) near.push_back(i);
+      if (near.empty()) continue;  // no attitude to build where no mine is in reach
+      SonarPlane plane;
+      plane.attitude = make_attitude(boxes.roll(k), boxes.pitch(k), boxes.heading(k));
+      plane.altitude = boxes.altitude(k);
+      plane.along_tolerance = model.along_track_tolerance;
+      plane.depth_band = model.mine_depth_band;
+      for (const std::size_t i : near) {
+        const Vec3I& m = domains.mines[i];
+        // The interval test where the cheap one could not decide.
+        const Interval distance = box_distance(p, m);
+        if (!distance.intersects(swath)) continue;
+        const Interval reach = intersect(distance, swath);
+        Interval ranges = Interval::empty();
+        for (const SonarSide side : {SonarSide::starboard, SonarSide::port}) {
+          if (model.sonar_side != SonarSide::both && model.sonar_side != side) continue;
+          ranges = hull(ranges, feasible_ranges(plane, p, m, reach, side));
+        }
+        if (ranges.is_empty()) continue;
+        w.lower[k * w.mines + i] = ranges.lo();
+        w.upper[k * w.mines + i] = ranges.hi();
       }
-      if (ranges.is_empty()) continue;
-      w.lower[k * w.mines + i] = ranges.lo();
-      w.upper[k * w.mines + i] = ranges.hi();
     }
-  }
+  };
+  const std::size_t threads =
+      std::clamp<std::size_t>(w.steps / kStepsPerThread, 1, std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::jthread> workers;
+  for (std::size_t t = 1; t < threads; ++t)
+    workers.emplace_back(rows, w.steps * t / threads, w.steps * (t + 1) / threads);
+  rows(0, w.steps / threads);
+  workers.clear();  // joins
   return w;
 }
 
