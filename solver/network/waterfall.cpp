@@ -18,12 +18,22 @@ Interval feasible_ranges(SonarPlane plane, const Vec3I& position, const Vec3I& m
   return range;
 }
 
+bool same(const Interval& a, const Interval& b) { return a.lo() == b.lo() && a.hi() == b.hi(); }
+
+// The step's position boxes and its neighbours' are those of `before`.
+bool same_positions(const TubeDomains& d, const TubeDomains& before, std::size_t k) {
+  for (std::size_t j = k == 0 ? 0 : k - 1; j <= std::min(k + 1, d.size() - 1); ++j)
+    if (!same(d.px[j], before.px[j]) || !same(d.py[j], before.py[j]) || !same(d.pz[j], before.pz[j])) return false;
+  return true;
+}
+
 // Fewer steps than this per thread are not worth a thread.
 constexpr std::size_t kStepsPerThread = 20000;
 
 }  // namespace
 
-Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains) {
+Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains,
+                            const WaterfallBefore* before) {
   // The tube holds the truth, so the frame's margins over it hold too.
   const std::vector<double> margins = heading_margins_over(mission, domains);
   const SensorBoxes boxes(mission, model, HeadingFrame{mission.heading_frame_margin, margins});
@@ -34,14 +44,30 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
   w.lower.assign(w.steps * w.mines, nan);
   w.upper.assign(w.steps * w.mines, nan);
   const Interval swath(0.0, model.sonar_max_range);
+  // The mines whose box has not changed since `before`, if any.
+  std::vector<char> mine_kept(w.mines, 0);
+  if (before && before->waterfall.steps == w.steps && before->waterfall.mines == w.mines &&
+      before->domains.size() == w.steps && before->domains.mines.size() == w.mines)
+    for (std::size_t i = 0; i < w.mines; ++i)
+      mine_kept[i] = same(domains.mines[i][0], before->domains.mines[i][0]) &&
+                     same(domains.mines[i][1], before->domains.mines[i][1]) &&
+                     same(domains.mines[i][2], before->domains.mines[i][2]);
+  const bool any_kept = std::find(mine_kept.begin(), mine_kept.end(), 1) != mine_kept.end();
   // Steps [first, last): each thread writes its own rows.
   const auto rows = [&](std::size_t first, std::size_t last) {
     std::vector<std::size_t> near;
     for (std::size_t k = first; k < last; ++k) {
       const Vec3I p = domains.position(k);
+      const bool kept_step = any_kept && same_positions(domains, before->domains, k);
       near.clear();
-      for (std::size_t i = 0; i < w.mines; ++i)
-        if (!boxes_beyond(p, domains.mines[i], model.sonar_max_range)) near.push_back(i);
+      for (std::size_t i = 0; i < w.mines; ++i) {
+        if (kept_step && mine_kept[i]) {
+          w.lower[k * w.mines + i] = before->waterfall.lower[k * w.mines + i];
+          w.upper[k * w.mines + i] = before->waterfall.upper[k * w.mines + i];
+        } else if (!boxes_beyond(p, domains.mines[i], model.sonar_max_range)) {
+          near.push_back(i);
+        }
+      }
       if (near.empty()) continue;  // no attitude to build where no mine is in reach
       SonarPlane plane;
       plane.attitude = make_attitude(boxes.roll(k), boxes.pitch(k), boxes.heading(k));

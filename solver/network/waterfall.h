@@ -21,6 +21,16 @@ struct Waterfall {
   bool feasible(std::size_t k, std::size_t i) const { return lower[k * mines + i] == lower[k * mines + i]; }
 };
 
-Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains);
+/// A waterfall computed earlier on the same navigation (a warm rerun's previous result):
+/// a cell whose position boxes (the step's and its neighbours', which fix the heading
+/// margin there) and mine box are bitwise those of then is copied, not recomputed, so
+/// the result is the one a full computation gives.
+struct WaterfallBefore {
+  const TubeDomains& domains;
+  const Waterfall& waterfall;
+};
+
+Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains,
+                            const WaterfallBefore* before = nullptr);
 
 }  // namespace gesmi

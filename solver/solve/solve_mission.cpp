@@ -232,7 +232,10 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
   if (!s.report.consistent) s.report.message = wording(s.report, options, net);
   if (options.waterfall) {
     const auto start = Clock::now();
-    s.waterfall = compute_waterfall(mission, mission.model, s.domains);
+    // A warm rerun's earlier waterfall is copied where nothing it depends on changed.
+    const MissionSolution* previous = s.report.mode == SolveMode::warm ? options.warm_from : nullptr;
+    const WaterfallBefore before{previous ? previous->domains : s.domains, previous ? previous->waterfall : s.waterfall};
+    s.waterfall = compute_waterfall(mission, mission.model, s.domains, previous ? &before : nullptr);
     s.timings_ms["waterfall"] = elapsed_ms(start);
   }
   return s;

@@ -6,7 +6,7 @@ Markdown table. Missions: the reference-like one (59,995 steps) and, with --size
 10^6 and 10^7 steps (the survey repeated).
 
     tools/bench/whole_process.py [--gesmi build/bin/gesmi] [--runs 5] [--sizes ref 1e6 1e7]
-                                 [--only solve warm ...] [--keep DIR]
+                                 [--only solve warm ...] [--skip NAME ...] [--keep DIR]
 
 The operator iteration is `marks add` + `solve --from` + `waterfall` + `candidates`
 after one missed mark is found (the simulator's first missed mark, its true range).
@@ -80,6 +80,7 @@ def main():
     parser.add_argument("--runs", type=int, default=5)
     parser.add_argument("--sizes", nargs="+", default=["ref"], choices=list(SIZES))
     parser.add_argument("--only", nargs="+", help="command names to time (prefixes of the table's names)")
+    parser.add_argument("--skip", nargs="+", default=[], help="command names not to time (prefixes)")
     parser.add_argument("--keep", help="folder for the files (default: a temporary one, removed)")
     args = parser.parse_args()
     gesmi = os.path.abspath(args.gesmi)
@@ -100,6 +101,8 @@ def main():
             operator = [0.0, 0.0]
             for name, command, setup, fresh in commands(gesmi, folder, mission):
                 if args.only and not any(name.startswith(o) for o in args.only):
+                    continue
+                if any(name.startswith(o) for o in args.skip):
                     continue
                 if setup:
                     run(setup)
