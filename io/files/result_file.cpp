@@ -16,14 +16,19 @@ namespace gesmi::io {
 namespace {
 
 constexpr const char* kFormat = "gesmi-result";
-// 1: before digests (no format_version attribute); 2: per-dataset and root SHA-256.
-constexpr H5FormatVersions kVersions{.current = 2, .oldest = 1, .when_absent = 1};
+// 1: before digests (no format_version attribute); 2: per-dataset and root SHA-256;
+// 3: the waterfall stored as its feasible cells only.
+constexpr H5FormatVersions kVersions{.current = 3, .oldest = 1, .when_absent = 1};
 
-// Every dataset of a result, in the order the root digest lists them.
+// Every dataset of a result, in the order the root digest lists them (format 3;
+// format 2 has no /waterfall/step and /waterfall/mine, its waterfall being dense).
 const char* const kDatasets[] = {"/time",          "/tube/lower",       "/tube/upper",     "/increments/lower",
-                                 "/increments/upper", "/mines/lower",   "/mines/upper",    "/waterfall/lower",
-                                 "/waterfall/upper", "/marks/candidates", "/marks/outlier", "/marks/time",
-                                 "/marks/range",    "/marks/mine",       "/marks/side",     "/gps/outlier"};
+                                 "/increments/upper", "/mines/lower",   "/mines/upper",    "/waterfall/step",
+                                 "/waterfall/mine", "/waterfall/lower", "/waterfall/upper", "/marks/candidates",
+                                 "/marks/outlier",  "/marks/time",      "/marks/range",    "/marks/mine",
+                                 "/marks/side",     "/gps/outlier"};
+
+bool format_3_only(std::string_view name) { return name == "/waterfall/step" || name == "/waterfall/mine"; }
 
 // The root attributes the root digest covers (timings are informative and left out).
 std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& r) {
@@ -100,6 +105,65 @@ void expect_flags(const H5File& f, const std::string& dataset, const std::vector
     if (values[i] != 0 && values[i] != 1) bad(f, dataset, "row " + std::to_string(i) + ": expected 0 or 1");
 }
 
+// The feasible cells of the waterfall in (step, mine) order: most of a dense waterfall
+// is NaN (97.5 % at 10^7 steps), a mine being within the sonar's reach on few steps.
+void write_waterfall_cells(H5File& f, const Waterfall& w, std::size_t steps_in_tube, std::size_t mine_count,
+                           const std::string& path) {
+  // Cells not written would read back as "no mine can appear there".
+  if (w.steps != steps_in_tube || w.mines != mine_count)
+    throw FormatError(path + ": the solution has no waterfall to write (solve with the waterfall computed)");
+  std::vector<std::int32_t> steps, mines;
+  std::vector<double> lower, upper;
+  for (std::size_t k = 0; k < w.steps; ++k)
+    for (std::size_t i = 0; i < w.mines; ++i)
+      if (w.feasible(k, i)) {
+        steps.push_back(static_cast<std::int32_t>(k));
+        mines.push_back(static_cast<std::int32_t>(i));
+        lower.push_back(w.lo(k, i));
+        upper.push_back(w.hi(k, i));
+      }
+  write_digested(f, "/waterfall/step", steps, steps.size());
+  write_digested(f, "/waterfall/mine", mines, mines.size());
+  write_digested(f, "/waterfall/lower", lower, lower.size());
+  write_digested(f, "/waterfall/upper", upper, upper.size());
+}
+
+// The waterfall of n steps and k mines from its cells (format 3), checked: equal
+// lengths, steps and mines in range, cells in strictly increasing order, finite bounds
+// in order.
+void read_waterfall_cells(const H5File& f, std::size_t n, std::size_t k, Waterfall& w) {
+  const std::vector<std::int32_t> steps = f.read_ints("/waterfall/step", 1), mines = f.read_ints("/waterfall/mine", 1);
+  const std::vector<double> lower = f.read_doubles("/waterfall/lower", 1), upper = f.read_doubles("/waterfall/upper", 1);
+  const std::size_t cells = steps.size();
+  for (const auto& [name, size] : {std::pair{"/waterfall/mine", mines.size()}, std::pair{"/waterfall/lower", lower.size()},
+                                   std::pair{"/waterfall/upper", upper.size()}})
+    if (size != cells) bad(f, name, std::to_string(size) + " rows where /waterfall/step has " + std::to_string(cells));
+  verify_digest(f, "/waterfall/step", steps, cells, 1);
+  verify_digest(f, "/waterfall/mine", mines, cells, 1);
+  verify_digest(f, "/waterfall/lower", lower, cells, 1);
+  verify_digest(f, "/waterfall/upper", upper, cells, 1);
+  w.steps = n;
+  w.mines = k;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  w.lower.assign(n * k, nan);
+  w.upper.assign(n * k, nan);
+  std::size_t previous = 0;
+  for (std::size_t c = 0; c < cells; ++c) {
+    const std::string row = "row " + std::to_string(c);
+    if (steps[c] < 0 || static_cast<std::size_t>(steps[c]) >= n)
+      bad(f, "/waterfall/step", row + ": step " + std::to_string(steps[c]) + " is not one of the " + std::to_string(n));
+    if (mines[c] < 0 || static_cast<std::size_t>(mines[c]) >= k)
+      bad(f, "/waterfall/mine", row + ": mine " + std::to_string(mines[c]) + " is not one of the " + std::to_string(k));
+    const std::size_t cell = static_cast<std::size_t>(steps[c]) * k + static_cast<std::size_t>(mines[c]);
+    if (c > 0 && cell <= previous) bad(f, "/waterfall/step", row + ": cells must be in increasing (step, mine) order");
+    previous = cell;
+    if (!std::isfinite(lower[c]) || !std::isfinite(upper[c]) || !(lower[c] <= upper[c]))
+      bad(f, "/waterfall/lower", row + ": bounds must be finite with lower <= upper");
+    w.lower[cell] = lower[c];
+    w.upper[cell] = upper[c];
+  }
+}
+
 }  // namespace
 
 void write_result(const SolveResult& r, const std::string& path) {
@@ -123,8 +187,7 @@ void write_result(const SolveResult& r, const std::string& path) {
     const std::vector<Interval>* mines[3] = {&mx, &my, &mz};
     write_bounds(f, "/mines", mines, d.mines.size());
     const std::size_t k = static_cast<std::size_t>(s.mine_count);
-    write_digested(f, "/waterfall/lower", s.waterfall.lower, s.waterfall.steps, s.waterfall.mines, 2);
-    write_digested(f, "/waterfall/upper", s.waterfall.upper, s.waterfall.steps, s.waterfall.mines, 2);
+    write_waterfall_cells(f, s.waterfall, n, k, path);
     std::vector<std::int32_t> candidates(s.candidates.size() * k);
     for (std::size_t j = 0; j < s.candidates.size(); ++j)
       for (std::size_t i = 0; i < k; ++i) candidates[j * k + i] = static_cast<std::int32_t>(s.candidates[j] >> i & 1);
@@ -258,7 +321,8 @@ SolveResult read_result(const std::string& path, bool with_waterfall) {
                                 std::to_string(s.mine_count) + " mines (-1 for unknown)");
     if (verified && s.mark_side[j] != 1 && s.mark_side[j] != -1) bad(f, "/marks/side", row + ": side must be +1 or -1");
   }
-  if (with_waterfall) {
+  if (with_waterfall && r.format_version >= 3) read_waterfall_cells(f, n, k, s.waterfall);
+  if (with_waterfall && r.format_version < 3) {
     const H5Shape ws = f.shape("/waterfall/lower");
     if (ws.rows != n || (k > 0 && ws.columns != k))
       bad(f, "/waterfall/lower", "expected " + std::to_string(n) + " x " + std::to_string(k));
@@ -282,6 +346,7 @@ SolveResult read_result(const std::string& path, bool with_waterfall) {
   if (verified) {
     std::vector<std::pair<std::string, std::string>> fields = root_fields(r);
     for (const char* dataset : kDatasets) {
+      if (r.format_version < 3 && format_3_only(dataset)) continue;
       const auto stored = f.string_attribute(dataset, "sha256");
       if (!stored) bad(f, dataset, "has no sha256 attribute (edited or damaged)");
       fields.emplace_back(dataset, *stored);

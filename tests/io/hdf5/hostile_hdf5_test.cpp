@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -150,6 +152,9 @@ TEST(HostileHdf5, EditedResultsAreRefusedNamingWhatDiffers) {
       {"f.attrs['sweeps'] = np.int64(999)", "/: attributes or dataset digests differ"},
       {"f.attrs['inconsistency'] = 'all fine'", "/: attributes or dataset digests differ"},
       {"f.attrs['bounds_sha256'] = np.array([b'a', b'b'])", "attribute bounds_sha256 holds 2 values"},
+      {"s = f['/waterfall/step'][:]\ns[[0, 1]] = s[[1, 0]] + 1\nf['/waterfall/step'][:] = s", "/waterfall/step: contents differ"},
+      {"m = f['/waterfall/mine'][:]\ndel f['/waterfall/mine']\nf['/waterfall/mine'] = m[:-1]",
+       "/waterfall/mine: " },
       // Values edited and their dataset digest recomputed the way gesmi computes it:
       // the root digest, which covers every dataset digest, still tells.
       {"import hashlib, struct\nname = b'/tube/lower'\nlo = f['/tube/lower'][:] - 1.0\nf['/tube/lower'][:] = lo\n"
@@ -161,13 +166,23 @@ TEST(HostileHdf5, EditedResultsAreRefusedNamingWhatDiffers) {
 }
 
 TEST(HostileHdf5, ResultsOfEarlierVersionsAreReadButCheckedValueByValue) {
-  // A result as gesmi 0.1 wrote it: no format_version, no digests.
+  // A result as gesmi 0.1 wrote it: no format_version, no digests, a dense waterfall.
   const std::string strip =
       "del f.attrs['format_version']\ndel f.attrs['sha256']\n"
+      "n = f['/time'].shape[0]\nk = int(f.attrs['mine_count'])\nlo = np.full((n, k), np.nan)\nhi = np.full((n, k), np.nan)\n"
+      "s = f['/waterfall/step'][:]\nm = f['/waterfall/mine'][:]\n"
+      "lo[s, m] = f['/waterfall/lower'][:]\nhi[s, m] = f['/waterfall/upper'][:]\n"
+      "for d in ['step', 'mine', 'lower', 'upper']: del f['/waterfall/' + d]\n"
+      "f['/waterfall/lower'] = lo\nf['/waterfall/upper'] = hi\n"
       "def drop(name, obj):\n    if isinstance(obj, h5py.Dataset) and 'sha256' in obj.attrs: del obj.attrs['sha256']\n"
       "f.visititems(drop)\n";
   const SolveResult old = read_result(edited(samples().result, strip));
   EXPECT_EQ(old.format_version, 1);
+  // The dense waterfall of then and the cells of now read back alike, NaN cells included.
+  const Waterfall& now = read_result(samples().result).solution.waterfall;
+  ASSERT_EQ(old.solution.waterfall.lower.size(), now.lower.size());
+  EXPECT_EQ(std::memcmp(old.solution.waterfall.lower.data(), now.lower.data(), now.lower.size() * sizeof(double)), 0);
+  EXPECT_EQ(std::memcmp(old.solution.waterfall.upper.data(), now.upper.data(), now.upper.size() * sizeof(double)), 0);
   const Case cases[] = {
       {"m = f['/marks/mine'][:]\nm[0] = 9\nf['/marks/mine'][:] = m", "/marks/mine: row 0: mine 9 is not one of the result's"},
       {"r = f['/marks/range'][:]\nr[1] = -4\nf['/marks/range'][:] = r", "/marks/range: row 1: range must be finite and >= 0"},
