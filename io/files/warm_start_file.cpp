@@ -9,6 +9,10 @@
 namespace gesmi::io {
 
 MissionSolution read_warm_start(const std::string& path, const Mission& mission) {
+  return read_warm_start(path, mission, navigation_digest(mission));
+}
+
+MissionSolution read_warm_start(const std::string& path, const Mission& mission, const std::string& navigation) {
   SolveResult previous = read_result(path, true);  // its waterfall is reused where unchanged
   const auto refuse = [&](const std::string& why) { throw FormatError("--from " + path + ": " + why); };
   if (previous.format_version < 2)
@@ -17,7 +21,7 @@ MissionSolution read_warm_start(const std::string& path, const Mission& mission)
   // are not the ones this gesmi would start from.
   if (previous.version != version())
     refuse("computed by gesmi " + previous.version + ", this is gesmi " + std::string(version()) + "; run a cold solve");
-  if (previous.navigation_digest != navigation_digest(mission))
+  if (previous.navigation_digest != navigation)
     refuse("the navigation data (DVL, attitude, depth, altitude, GPS) differ from the mission it was computed on; run a cold solve");
   if (previous.bounds_digest != bounds_digest(mission.model))
     refuse("the sensor bounds differ from those it was computed with; run a cold solve");

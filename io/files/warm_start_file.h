@@ -11,6 +11,9 @@
 
 namespace gesmi::io {
 
+/// `navigation` is navigation_digest(mission) when the caller has it already (a solve
+/// stores it in its result): each input is hashed once.
+MissionSolution read_warm_start(const std::string& path, const Mission& mission, const std::string& navigation);
 MissionSolution read_warm_start(const std::string& path, const Mission& mission);
 
 }  // namespace gesmi::io

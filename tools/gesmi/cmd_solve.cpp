@@ -46,9 +46,11 @@ int run_solve(std::span<const std::string> args) {
   Mission mission = io::read_mission(mission_path);
   if (v.count("config")) io::merge_sensor_model_yaml(v["config"].as<std::string>(), mission.model);
   apply_mine_count(v, mission);
+  // Hashed once: the warm start compares it, the result stores it.
+  const std::string navigation = io::navigation_digest(mission);
   MissionSolution previous;
   if (v.count("from")) {
-    previous = io::read_warm_start(v["from"].as<std::string>(), mission);
+    previous = io::read_warm_start(v["from"].as<std::string>(), mission, navigation);
     options.warm_from = &previous;
   }
   timings["load"] = elapsed_ms(start);
@@ -65,7 +67,7 @@ int run_solve(std::span<const std::string> args) {
   timings.insert(s.timings_ms.begin(), s.timings_ms.end());
 
   start = Clock::now();
-  result.navigation_digest = io::navigation_digest(mission);
+  result.navigation_digest = navigation;
   result.bounds_digest = io::bounds_digest(mission.model);
   result.marks_digest = io::marks_digest(mission, mission.mark_count());
   result.version = std::string(io::version());

@@ -162,7 +162,8 @@ void bind_solve(py::module_& m) {
       "wrong; minimal_outliers: conditional)");
   m.def("read_result", [](const std::string& path) { return io::read_result(path).solution; }, py::arg("path"),
         "Reads a result file, its digests checked");
-  m.def("read_warm_start", &io::read_warm_start, py::arg("path"), py::arg("mission"),
+  m.def("read_warm_start", py::overload_cast<const std::string&, const Mission&>(&io::read_warm_start), py::arg("path"),
+        py::arg("mission"),
         "Reads a result file as the warm start of a solve of `mission` (as `gesmi solve --from`)");
   m.def(
       "write_result",
