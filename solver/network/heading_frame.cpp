@@ -7,6 +7,7 @@
 #include "solver/interval/rounding.h"
 #include "solver/mission/meridian_convergence.h"
 #include "solver/network/sensor_boxes.h"
+#include "solver/network/step_chunks.h"
 
 namespace gesmi {
 namespace {
@@ -43,6 +44,9 @@ double speed_bound_from(const Mission& m, const SensorModel& model, double large
   return add_up(largest_at_samples, mul_up(1.7321, mul_up(model.max_acceleration, mul_up(0.5, longest))));
 }
 
+// Fewer steps than this per thread are not worth a thread.
+constexpr std::size_t kStepsPerChunk = 20000;
+
 }  // namespace
 
 double speed_bound(const Mission& m) {
@@ -69,22 +73,30 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
   priors.turn_east.resize(steps);
   for (std::size_t k = 0; k < n; ++k) d.pz[k] = boxes.depth(k);
   if (n == 0) return priors;
-  SensorBoxes::SampleBoxes next = boxes.sample(0);
-  double largest = squared_norm_up(next.velocity);
-  for (std::size_t k = 0; k < steps; ++k) {
-    const SensorBoxes::SampleBoxes current = next;
-    next = boxes.sample(k + 1);
-    largest = std::max(largest, squared_norm_up(next.velocity));
-    SensorBoxes::StepTurn turn;
-    const Vec3I inc = boxes.step_increment(current, next, k, &turn);
-    d.dx[k] = inc[0];
-    d.dy[k] = inc[1];
-    d.dz[k] = inc[2];
-    priors.turn_north[k] = float_up(turn.north);
-    priors.turn_east[k] = float_up(turn.east);
-    if (turn.apart_hull) priors.apart_hulls.emplace_back(k, *turn.apart_hull);
-  }
-  priors.max_speed = speed_bound_from(mission, model, sqrt_up(largest));
+  // Steps in chunks, one per core; each chunk keeps its own largest speed and apart
+  // hulls, joined in step order afterwards.
+  const std::size_t chunks = step_chunk_count(steps, kStepsPerChunk);
+  std::vector<double> largest(chunks, squared_norm_up(boxes.sample(0).velocity));
+  std::vector<std::vector<std::pair<std::size_t, Vec3I>>> apart(chunks);
+  for_step_chunks(steps, chunks, [&](std::size_t chunk, std::size_t first, std::size_t last) {
+    if (first == last) return;
+    SensorBoxes::SampleBoxes next = boxes.sample(first);
+    for (std::size_t k = first; k < last; ++k) {
+      const SensorBoxes::SampleBoxes current = next;
+      next = boxes.sample(k + 1);
+      largest[chunk] = std::max(largest[chunk], squared_norm_up(next.velocity));
+      SensorBoxes::StepTurn turn;
+      const Vec3I inc = boxes.step_increment(current, next, k, &turn);
+      d.dx[k] = inc[0];
+      d.dy[k] = inc[1];
+      d.dz[k] = inc[2];
+      priors.turn_north[k] = float_up(turn.north);
+      priors.turn_east[k] = float_up(turn.east);
+      if (turn.apart_hull) apart[chunk].emplace_back(k, *turn.apart_hull);
+    }
+  });
+  for (const auto& hulls : apart) priors.apart_hulls.insert(priors.apart_hulls.end(), hulls.begin(), hulls.end());
+  priors.max_speed = speed_bound_from(mission, model, sqrt_up(*std::max_element(largest.begin(), largest.end())));
   return priors;
 }
 

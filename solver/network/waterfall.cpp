@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <limits>
-#include <thread>
 
 #include "solver/network/sonar_plane.h"
 #include "solver/network/sensor_boxes.h"
+#include "solver/network/step_chunks.h"
 
 namespace gesmi {
 namespace {
@@ -53,8 +53,8 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
                      same(domains.mines[i][1], before->domains.mines[i][1]) &&
                      same(domains.mines[i][2], before->domains.mines[i][2]);
   const bool any_kept = std::find(mine_kept.begin(), mine_kept.end(), 1) != mine_kept.end();
-  // Steps [first, last): each thread writes its own rows.
-  const auto rows = [&](std::size_t first, std::size_t last) {
+  // Steps [first, last): each chunk writes its own rows.
+  const auto rows = [&](std::size_t, std::size_t first, std::size_t last) {
     std::vector<std::size_t> near;
     for (std::size_t k = first; k < last; ++k) {
       const Vec3I p = domains.position(k);
@@ -91,13 +91,7 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
       }
     }
   };
-  const std::size_t threads =
-      std::clamp<std::size_t>(w.steps / kStepsPerThread, 1, std::max(1u, std::thread::hardware_concurrency()));
-  std::vector<std::jthread> workers;
-  for (std::size_t t = 1; t < threads; ++t)
-    workers.emplace_back(rows, w.steps * t / threads, w.steps * (t + 1) / threads);
-  rows(0, w.steps / threads);
-  workers.clear();  // joins
+  for_step_chunks(w.steps, step_chunk_count(w.steps, kStepsPerThread), rows);
   return w;
 }
 
