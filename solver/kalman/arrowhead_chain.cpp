@@ -6,9 +6,20 @@
 namespace gesmi {
 
 ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, double prior_info)
-    : n_(n), q_(q), diag_(n, Mat3::Zero()), eta_(n, Vec3::Zero()), step_info_(n > 0 ? n - 1 : 0, Mat3::Zero()),
-      mixed_(n), d_(MatX::Identity(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)) * prior_info),
+    : n_(n), q_(q), prior_info_(prior_info), diag_(n, Mat3::Zero()), eta_(n, Vec3::Zero()),
+      step_info_(n > 0 ? n - 1 : 0, Mat3::Zero()), mixed_(n),
+      d_(MatX::Identity(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)) * prior_info),
       eta_m_(VecX::Zero(static_cast<Eigen::Index>(q))) {}
+
+void ArrowheadChain::reset() {
+  for (Mat3& x : diag_) x.setZero();
+  for (Vec3& x : eta_) x.setZero();
+  for (Mat3& x : step_info_) x.setZero();
+  for (MatX& x : mixed_) x.resize(0, 0);  // a few event steps hold one
+  const auto q = static_cast<Eigen::Index>(q_);
+  d_ = MatX::Identity(q, q) * prior_info_;
+  eta_m_.setZero();
+}
 
 void ArrowheadChain::add_position(std::size_t k, const Mat3& information, const Vec3& mean) {
   diag_[k] += information;
@@ -41,12 +52,8 @@ void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVe
 // the backward recursions run on 3x3 blocks, so a step costs a few 3x3 products.
 void ArrowheadChain::solve() {
   const auto q = static_cast<Eigen::Index>(q_);
-  struct Step {
-    Mat3 s, l, p;  // conditional covariance, -S W, S T (so that M_k = P_k B_e)
-    Vec3 c;
-    int segment = -1;
-  };
-  std::vector<Step> steps(n_);
+  std::vector<Step>& steps = steps_;
+  steps.resize(n_);
   std::vector<MatX> segment_b;  // B_e of each segment (3 x q)
   MatX d = d_;
   VecX eta_m = eta_m_;
@@ -73,6 +80,7 @@ void ArrowheadChain::solve() {
   if (n_ > 0 && mixed_[0].size() != 0) open_segment(0, nullptr);
   for (std::size_t k = 0; k < n_; ++k) {
     Step& st = steps[k];
+    st.segment = -1;  // (kept from an earlier solve otherwise)
     st.s = a.inverse();
     st.c = st.s * eta;
     if (!segment_b.empty()) {

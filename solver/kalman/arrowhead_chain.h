@@ -24,6 +24,10 @@ class ArrowheadChain {
   /// each, so that unknowns no factor reaches stay finite).
   ArrowheadChain(std::size_t n, std::size_t q, double prior_info = 1e-12);
 
+  /// Removes every factor, keeping the memory: a relinearised system is built again in
+  /// the same buffers (at 10^7 steps, reallocating them cost more than the solve).
+  void reset();
+
   /// Information W and mean term on p_k alone: adds W to the block and W * mean.
   void add_position(std::size_t k, const Mat3& information, const Vec3& mean);
   /// p_{k+1} - p_k = delta with information W (the odometry between two samples).
@@ -42,7 +46,16 @@ class ArrowheadChain {
   std::size_t size() const { return n_; }
 
  private:
+  // The forward pass's per-step conditionals: conditional covariance, -S W, S T (so
+  // that M_k = P_k B_e), the conditional mean, and the step's segment.
+  struct Step {
+    Mat3 s, l, p;
+    Vec3 c;
+    int segment = -1;
+  };
+
   std::size_t n_, q_;
+  double prior_info_;
   std::vector<Mat3> diag_;        // information block of p_k
   std::vector<Vec3> eta_;         // information vector of p_k
   std::vector<Mat3> step_info_;   // W_k between p_k and p_k+1
@@ -54,6 +67,7 @@ class ArrowheadChain {
   std::vector<Mat3> covariances_;
   VecX m_mean_;
   MatX m_cov_;
+  std::vector<Step> steps_;  // kept between solves
 };
 
 }  // namespace gesmi

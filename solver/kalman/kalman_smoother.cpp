@@ -29,11 +29,10 @@ struct Linearisation {
 
 // Builds and solves the linearised system; `lin` gives the linearisation points of
 // the range measurements (the first pass initialises the mines along the way).
-ArrowheadChain build_and_solve(const Mission& m, const SensorModel& model, std::span<const PositionFix> fixes,
-                               const KalmanOptions& o, Linearisation& lin) {
-  const std::size_t n = m.size(), k_mines = static_cast<std::size_t>(m.mine_count);
-  const std::size_t q = 3 * k_mines;
-  ArrowheadChain chain(n, q);
+void build_and_solve(const Mission& m, const SensorModel& model, std::span<const PositionFix> fixes,
+                     const KalmanOptions& o, Linearisation& lin, ArrowheadChain& chain) {
+  const std::size_t n = m.size(), q = 3 * static_cast<std::size_t>(m.mine_count);
+  chain.reset();
   const double f = o.noise_factor;
   // Odometry: p(k+1) - p(k) = dt (R_k v_k + R_{k+1} v_{k+1}) / 2, DVL noise per axis.
   for (std::size_t k = 0; k + 1 < n; ++k) {
@@ -106,7 +105,6 @@ ArrowheadChain build_and_solve(const Mission& m, const SensorModel& model, std::
     chain.add_mixed(k, Eigen::RowVector3d(0.0, 0.0, -1.0), hm, m.altitude[k], 1.0 / var_depth);
   }
   chain.solve();
-  return chain;
 }
 
 }  // namespace
@@ -138,8 +136,9 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
   KalmanResult result;
   result.steps = n;
   result.mines = k_mines;
+  ArrowheadChain chain(n, 3 * k_mines);  // one set of buffers for every linearisation
   for (int it = 0; it < o.iterations; ++it) {
-    const ArrowheadChain chain = build_and_solve(m, model, fixes, o, lin);
+    build_and_solve(m, model, fixes, o, lin, chain);
     ++result.iterations;
     for (std::size_t k = 0; k < n; ++k) lin.position[k] = chain.mean(k);
     for (std::size_t i = 0; i < k_mines; ++i)
