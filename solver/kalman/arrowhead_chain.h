@@ -27,6 +27,8 @@ class ArrowheadChain {
   /// Removes every factor, keeping the memory: a relinearised system is built again in
   /// the same buffers (at 10^7 steps, reallocating them cost more than the solve).
   void reset();
+  /// Frees what only solve() needs, once no further solve follows.
+  void release_workspace() { std::vector<Step>().swap(steps_); }
 
   /// Information W and mean term on p_k alone: adds W to the block and W * mean.
   void add_position(std::size_t k, const Mat3& information, const Vec3& mean);

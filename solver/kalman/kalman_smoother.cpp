@@ -144,6 +144,7 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     for (std::size_t i = 0; i < k_mines; ++i)
       if (lin.mine_known[i]) lin.mine[i] = chain.static_mean().segment<3>(static_cast<Eigen::Index>(3 * i));
     if (it + 1 < o.iterations) continue;
+    chain.release_workspace();  // before the result's arrays: the peak stays that of a solve
     result.mean.resize(3 * n);
     result.covariance.resize(9 * n);
     for (std::size_t k = 0; k < n; ++k) {
