@@ -36,6 +36,8 @@ class Interval {
   static constexpr Interval half_pi() { return from_bounds(0x1.921fb54442d18p+0, 0x1.921fb54442d19p+0); }
   /// The interval x +- r (r >= 0), rounded outward.
   static Interval around(double x, double r) { return Interval(sub_down(x, r), add_up(x, r)); }
+  /// This interval widened by r >= 0 on each side, rounded outward.
+  Interval inflated(double r) const { return Interval(sub_down(lo_, r), add_up(hi_, r)); }
 
   constexpr double lo() const { return lo_; }
   constexpr double hi() const { return hi_; }

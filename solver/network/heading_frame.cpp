@@ -20,8 +20,6 @@ float float_up(double x) {
   return f;
 }
 
-Interval widen(const Interval& x, double e) { return Interval(sub_down(x.lo(), e), add_up(x.hi(), e)); }
-
 // How far a turn by at most `margin` moves one component of a step's increment:
 // margin times the other component's integral, plus margin²/2 times its own. All
 // terms are non-negative, so the four roundings to nearest are covered by a relative
@@ -36,24 +34,17 @@ double squared_norm_up(const Vec3I& v) {
   return add_up(add_up(mul_up(v[0].mag(), v[0].mag()), mul_up(v[1].mag(), v[1].mag())), mul_up(v[2].mag(), v[2].mag()));
 }
 
-// What max_acceleration adds to |v| within the longest step, on each axis (sqrt(3) <
-// 1.7321).
-double speed_bound_from(const Mission& m, const SensorModel& model, double largest_at_samples) {
-  double longest = 0.0;
-  for (std::size_t k = 0; k + 1 < m.size(); ++k) longest = std::max(longest, sub_up(m.time[k + 1], m.time[k]));
-  return add_up(largest_at_samples, mul_up(1.7321, mul_up(model.max_acceleration, mul_up(0.5, longest))));
-}
-
-// Fewer steps than this per thread are not worth a thread.
-constexpr std::size_t kStepsPerChunk = 20000;
-
 }  // namespace
 
 double speed_bound(const Mission& m) {
   const SensorBoxes boxes(m, m.model, HeadingFrame{});
-  double largest = 0.0;
-  for (std::size_t k = 0; k < m.size(); ++k) largest = std::max(largest, squared_norm_up(boxes.velocity(k)));
-  return speed_bound_from(m, m.model, sqrt_up(largest));
+  double largest = 0.0, longest = 0.0;
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    largest = std::max(largest, squared_norm_up(boxes.velocity(k)));
+    if (k + 1 < m.size()) longest = std::max(longest, sub_up(m.time[k + 1], m.time[k]));
+  }
+  // Plus what max_acceleration adds within the longest step, on each axis (sqrt(3) < 1.7321).
+  return add_up(sqrt_up(largest), mul_up(1.7321, mul_up(m.model.max_acceleration, mul_up(0.5, longest))));
 }
 
 SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& model) {
@@ -73,10 +64,9 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
   priors.turn_east.resize(steps);
   for (std::size_t k = 0; k < n; ++k) d.pz[k] = boxes.depth(k);
   if (n == 0) return priors;
-  // Steps in chunks, one per core; each chunk keeps its own largest speed and apart
-  // hulls, joined in step order afterwards.
-  const std::size_t chunks = step_chunk_count(steps, kStepsPerChunk);
-  std::vector<double> largest(chunks, squared_norm_up(boxes.sample(0).velocity));
+  // Steps in chunks, one per core; each chunk keeps its own apart hulls, joined in step
+  // order afterwards.
+  const std::size_t chunks = step_chunk_count(steps);
   std::vector<std::vector<std::pair<std::size_t, Vec3I>>> apart(chunks);
   for_step_chunks(steps, chunks, [&](std::size_t chunk, std::size_t first, std::size_t last) {
     if (first == last) return;
@@ -84,7 +74,6 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
     for (std::size_t k = first; k < last; ++k) {
       const SensorBoxes::SampleBoxes current = next;
       next = boxes.sample(k + 1);
-      largest[chunk] = std::max(largest[chunk], squared_norm_up(next.velocity));
       SensorBoxes::StepTurn turn;
       const Vec3I inc = boxes.step_increment(current, next, k, &turn);
       d.dx[k] = inc[0];
@@ -96,25 +85,31 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
     }
   });
   for (const auto& hulls : apart) priors.apart_hulls.insert(priors.apart_hulls.end(), hulls.begin(), hulls.end());
-  priors.max_speed = speed_bound_from(mission, model, sqrt_up(*std::max_element(largest.begin(), largest.end())));
   return priors;
 }
 
 TubeDomains sensor_domains_in(const SensorPriors& priors, const HeadingFrame& frame) {
   TubeDomains d = priors.domains;
+  // A step turns by the larger margin of its two samples; its north and east
+  // increments then widen by these amounts.
   const auto margin = [&](std::size_t k) { return std::max(frame.at(k), frame.at(k + 1)); };
+  const auto turn_of = [&](std::size_t k, double m) {
+    return std::pair{turn_widening(m, priors.turn_east[k], priors.turn_north[k]),
+                     turn_widening(m, priors.turn_north[k], priors.turn_east[k])};
+  };
   for (std::size_t k = 0; k < d.dx.size(); ++k) {
     const double m = margin(k);
     if (m == 0.0) continue;
-    d.dx[k] = widen(d.dx[k], turn_widening(m, priors.turn_east[k], priors.turn_north[k]));
-    d.dy[k] = widen(d.dy[k], turn_widening(m, priors.turn_north[k], priors.turn_east[k]));
+    const auto [north, east] = turn_of(k, m);
+    d.dx[k] = d.dx[k].inflated(north);
+    d.dy[k] = d.dy[k].inflated(east);
   }
   for (const auto& [k, hull] : priors.apart_hulls) {
-    // Both boxes widen alike; where they still do not meet, the step is empty and the
-    // solver reports it.
-    const double m = margin(k);
-    d.dx[k] = intersect(d.dx[k], widen(hull[0], turn_widening(m, priors.turn_east[k], priors.turn_north[k])));
-    d.dy[k] = intersect(d.dy[k], widen(hull[1], turn_widening(m, priors.turn_north[k], priors.turn_east[k])));
+    // Both boxes widen alike (the trapezoid above); where they still do not meet, the
+    // step is empty and the solver reports it.
+    const auto [north, east] = turn_of(k, margin(k));
+    d.dx[k] = intersect(d.dx[k], hull[0].inflated(north));
+    d.dy[k] = intersect(d.dy[k], hull[1].inflated(east));
     d.dz[k] = intersect(d.dz[k], hull[2]);
   }
   return d;

@@ -45,8 +45,6 @@ struct SensorPriors {
   /// Steps whose trapezoid and rate hull did not meet (SensorBoxes::StepTurn): the
   /// hull, which the turned increment is intersected with. In step order; rare.
   std::vector<std::pair<std::size_t, Vec3I>> apart_hulls;
-  /// The largest |v| the DVL boxes allow at any instant (m/s; speed_bound()).
-  double max_speed = 0.0;
 };
 
 SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& model);
@@ -59,7 +57,7 @@ TubeDomains sensor_domains_in(const SensorPriors& priors, const HeadingFrame& fr
 /// farthest point from the origin the robot can reach while in the boxes of the
 /// sample's two steps, never above the zone's margin. Empty when the mission's margin
 /// is zero (a mission without geodesy).
-/// `max_speed` bounds |v| at any instant (SensorPriors::max_speed, or speed_bound()).
+/// `max_speed` bounds |v| at any instant (speed_bound(), computed by the second form).
 std::vector<double> heading_margins_over(const Mission& mission, const TubeDomains& tube, double max_speed);
 std::vector<double> heading_margins_over(const Mission& mission, const TubeDomains& tube);
 

@@ -19,8 +19,7 @@ Interval SensorBoxes::heading(std::size_t k) const {
   // across the mission area (meridian convergence): widen by that angle.
   const Interval h = reading(m_.heading, m_.half_widths.heading, k, model_.heading);
   const double margin = frame_.at(k);
-  if (margin == 0.0) return h;
-  return Interval(sub_down(h.lo(), margin), add_up(h.hi(), margin));
+  return margin == 0.0 ? h : h.inflated(margin);
 }
 
 Vec3I SensorBoxes::velocity(std::size_t k) const {
@@ -53,8 +52,7 @@ double SensorBoxes::excursion(double rate, std::size_t k) const {
 }
 
 Interval SensorBoxes::widen(const Interval& a, const Interval& b, double excursion) {
-  const Interval both = hull(a, b);
-  return Interval(sub_down(both.lo(), excursion), add_up(both.hi(), excursion));
+  return hull(a, b).inflated(excursion);
 }
 
 SensorBoxes::SampleBoxes SensorBoxes::sample(std::size_t k) const {

@@ -9,9 +9,12 @@
 
 namespace gesmi {
 
+/// Fewer steps than this per chunk are not worth a thread.
+inline constexpr std::size_t kMinStepsPerChunk = 20000;
+
 /// The number of chunks for `count` steps: one per core, but none smaller than
 /// `min_per_chunk` steps (a thread costs more than a few thousand steps of work).
-inline std::size_t step_chunk_count(std::size_t count, std::size_t min_per_chunk) {
+inline std::size_t step_chunk_count(std::size_t count, std::size_t min_per_chunk = kMinStepsPerChunk) {
   return std::clamp<std::size_t>(count / min_per_chunk, 1, std::max(1u, std::thread::hardware_concurrency()));
 }
 

@@ -27,15 +27,13 @@ bool same_positions(const TubeDomains& d, const TubeDomains& before, std::size_t
   return true;
 }
 
-// Fewer steps than this per thread are not worth a thread.
-constexpr std::size_t kStepsPerThread = 20000;
-
 }  // namespace
 
 Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains,
-                            const WaterfallBefore* before) {
+                            const WaterfallBefore* before, std::optional<double> max_speed) {
   // The tube holds the truth, so the frame's margins over it hold too.
-  const std::vector<double> margins = heading_margins_over(mission, domains);
+  const std::vector<double> margins = max_speed ? heading_margins_over(mission, domains, *max_speed)
+                                                : heading_margins_over(mission, domains);
   const SensorBoxes boxes(mission, model, HeadingFrame{mission.heading_frame_margin, margins});
   Waterfall w;
   w.steps = domains.size();
@@ -91,7 +89,7 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
       }
     }
   };
-  for_step_chunks(w.steps, step_chunk_count(w.steps, kStepsPerThread), rows);
+  for_step_chunks(w.steps, step_chunk_count(w.steps), rows);
   return w;
 }
 

@@ -5,6 +5,7 @@
 // and within the sonar's range, given the final tube and mine box. Where that is
 // impossible both bounds are NaN.
 
+#include <optional>
 #include <vector>
 
 #include "solver/mission/mission.h"
@@ -30,7 +31,8 @@ struct WaterfallBefore {
   const Waterfall& waterfall;
 };
 
+/// `max_speed`: speed_bound(mission) (heading_frame.h) when the caller has it.
 Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains,
-                            const WaterfallBefore* before = nullptr);
+                            const WaterfallBefore* before = nullptr, std::optional<double> max_speed = std::nullopt);
 
 }  // namespace gesmi

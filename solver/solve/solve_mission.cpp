@@ -43,16 +43,23 @@ std::vector<ConstraintRef> diagnose(const MissionNetwork& net, const TubeDomains
   return explaining;
 }
 
+// What every mode reads besides the mission: its GPS fixes, and the speed bound the
+// heading frame's margins take (heading_frame.h; computed once per solve).
+struct SolveInputs {
+  std::vector<PositionFix> fixes;
+  double max_speed = 0.0;
+};
+
 // Builds the network and the sensor domains under a frame, the time counted as "build".
 struct Pass {
   MissionNetwork net;
   TubeDomains sensor;
 };
 
-Pass build_pass(const Mission& mission, std::span<const PositionFix> fixes, const SensorPriors& priors,
-                const HeadingFrame& frame, MissionSolution& s) {
+Pass build_pass(const Mission& mission, const SolveInputs& in, const SensorPriors& priors, const HeadingFrame& frame,
+                MissionSolution& s) {
   const auto start = Clock::now();
-  Pass pass{build_network(mission, mission.model, fixes, frame), sensor_domains_in(priors, frame)};
+  Pass pass{build_network(mission, mission.model, in.fixes, frame), sensor_domains_in(priors, frame)};
   s.timings_ms["build"] += elapsed_ms(start);
   return pass;
 }
@@ -66,30 +73,30 @@ SensorPriors build_priors(const Mission& mission, MissionSolution& s) {
 
 // The per-sample margins over a first pass's tube (heading_frame.h), or none when the
 // mission has no frame margin or that pass found no solution.
-bool narrow_frame(const Mission& mission, const SensorPriors& priors, const TubeDomains& tube, bool consistent,
+bool narrow_frame(const Mission& mission, const SolveInputs& in, const TubeDomains& tube, bool consistent,
                   std::vector<double>& margins, HeadingFrame& frame, MissionSolution& s) {
   if (!consistent || frame.uniform == 0.0) return false;
   const auto start = Clock::now();
-  margins = heading_margins_over(mission, tube, priors.max_speed);
+  margins = heading_margins_over(mission, tube, in.max_speed);
   frame.per_sample = margins;
   s.timings_ms["build"] += elapsed_ms(start);
   return true;
 }
 
-void solve_cold(const Mission& mission, std::span<const PositionFix> fixes, const SolveOptions& options,
-                MissionSolution& s, MissionNetwork& net) {
+void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOptions& options, MissionSolution& s,
+                MissionNetwork& net) {
   const SensorPriors priors = build_priors(mission, s);
   HeadingFrame frame = zone_frame(mission);
   std::vector<double> margins;
-  Pass pass = build_pass(mission, fixes, priors, frame, s);
+  Pass pass = build_pass(mission, in, priors, frame, s);
   s.domains = std::move(pass.sensor);
   add_network_priors(s.domains, pass.net);
   auto start = Clock::now();
   take_propagation(s.report, solve(pass.net, s.domains, options.propagation));
   s.timings_ms["propagate"] = elapsed_ms(start);
-  if (narrow_frame(mission, priors, s.domains, s.report.consistent, margins, frame, s)) {
+  if (narrow_frame(mission, in, s.domains, s.report.consistent, margins, frame, s)) {
     const int first_sweeps = s.report.sweeps;
-    pass = build_pass(mission, fixes, priors, frame, s);
+    pass = build_pass(mission, in, priors, frame, s);
     TubeDomains narrowed = std::move(pass.sensor);
     add_network_priors(narrowed, pass.net);
     intersect_with(narrowed, s.domains);  // the first pass's enclosure holds under a looser model
@@ -106,8 +113,8 @@ void solve_cold(const Mission& mission, std::span<const PositionFix> fixes, cons
   s.timings_ms["diagnose"] = elapsed_ms(start);
 }
 
-void solve_outliers(const Mission& mission, std::span<const PositionFix> fixes, const SolveOptions& options,
-                    MissionSolution& s, MissionNetwork& net) {
+void solve_outliers(const Mission& mission, const SolveInputs& in, const SolveOptions& options, MissionSolution& s,
+                    MissionNetwork& net) {
   OutlierOptions o;
   o.max_outliers = options.max_outliers;
   o.mode = options.outlier_mode;
@@ -116,14 +123,14 @@ void solve_outliers(const Mission& mission, std::span<const PositionFix> fixes, 
   const SensorPriors priors = build_priors(mission, s);
   HeadingFrame frame = zone_frame(mission);
   std::vector<double> margins;
-  Pass pass = build_pass(mission, fixes, priors, frame, s);
+  Pass pass = build_pass(mission, in, priors, frame, s);
   auto start = Clock::now();
   OutlierReport r = solve_with_outliers(pass.net, pass.sensor, s.domains, o);
   s.timings_ms["propagate"] = elapsed_ms(start);
   // The enclosure of either mode holds the truth under that mode's premise, and so do
   // the margins over it; the second pass solves afresh under them.
-  if (narrow_frame(mission, priors, s.domains, r.consistent(), margins, frame, s)) {
-    pass = build_pass(mission, fixes, priors, frame, s);
+  if (narrow_frame(mission, in, s.domains, r.consistent(), margins, frame, s)) {
+    pass = build_pass(mission, in, priors, frame, s);
     start = Clock::now();
     r = solve_with_outliers(pass.net, pass.sensor, s.domains, o);
     s.timings_ms["propagate"] += elapsed_ms(start);
@@ -147,22 +154,22 @@ void solve_outliers(const Mission& mission, std::span<const PositionFix> fixes, 
   for (std::size_t a = 0; a < net.anchors.size(); ++a) s.gps_outlier[net.anchors[a].fix.source_index] = r.fix_outlier[a];
 }
 
-void solve_warm(const Mission& mission, std::span<const PositionFix> fixes, const SolveOptions& options,
-                MissionSolution& s, MissionNetwork& net) {
+void solve_warm(const Mission& mission, const SolveInputs& in, const SolveOptions& options, MissionSolution& s,
+                MissionNetwork& net) {
   const MissionSolution& previous = *options.warm_from;
   std::string why = warm_start_problem(mission, previous);
   std::optional<detail::WarmDomains> warm;
   if (why.empty()) {
     // The previous tube holds the truth: the added marks take the margins over it.
     const auto start = Clock::now();
-    const std::vector<double> margins = heading_margins_over(mission, previous.domains);
-    net = build_network(mission, mission.model, fixes, HeadingFrame{mission.heading_frame_margin, margins});
+    const std::vector<double> margins = heading_margins_over(mission, previous.domains, in.max_speed);
+    net = build_network(mission, mission.model, in.fixes, HeadingFrame{mission.heading_frame_margin, margins});
     s.timings_ms["build"] += elapsed_ms(start);
     warm = detail::warm_domains(mission, net, previous, why);
   }
   if (!warm) {
     s.report.cold_fallback = why;
-    solve_cold(mission, fixes, options, s, net);
+    solve_cold(mission, in, options, s, net);
     return;
   }
   s.report.mode = SolveMode::warm;
@@ -216,26 +223,27 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
   s.mark_outlier.assign(mission.mark_count(), 0);
   s.gps_outlier.assign(mission.gps_time.size(), 0);
 
-  const std::vector<PositionFix> fixes = gps_fixes(mission);
+  auto start = Clock::now();
+  SolveInputs in{gps_fixes(mission), mission.heading_frame_margin > 0.0 ? speed_bound(mission) : 0.0};
   MissionNetwork net;
-  s.timings_ms["build"] = 0.0;
+  s.timings_ms["build"] = elapsed_ms(start);
   if (options.warm_from)
-    solve_warm(mission, fixes, options, s, net);
+    solve_warm(mission, in, options, s, net);
   else if (options.max_outliers >= 0)
-    solve_outliers(mission, fixes, options, s, net);
+    solve_outliers(mission, in, options, s, net);
   else
-    solve_cold(mission, fixes, options, s, net);
+    solve_cold(mission, in, options, s, net);
 
   s.candidates.assign(mission.mark_count(), 0);
   if (s.domains.candidates.size() == net.detections.size())
     for (std::size_t j = 0; j < net.detections.size(); ++j) s.candidates[net.detections[j].mark] = s.domains.candidates[j];
   if (!s.report.consistent) s.report.message = wording(s.report, options, net);
   if (options.waterfall) {
-    const auto start = Clock::now();
+    start = Clock::now();
     // A warm rerun's earlier waterfall is copied where nothing it depends on changed.
     const MissionSolution* previous = s.report.mode == SolveMode::warm ? options.warm_from : nullptr;
     const WaterfallBefore before{previous ? previous->domains : s.domains, previous ? previous->waterfall : s.waterfall};
-    s.waterfall = compute_waterfall(mission, mission.model, s.domains, previous ? &before : nullptr);
+    s.waterfall = compute_waterfall(mission, mission.model, s.domains, previous ? &before : nullptr, in.max_speed);
     s.timings_ms["waterfall"] = elapsed_ms(start);
   }
   return s;
