@@ -80,4 +80,10 @@ int line_count(const std::string& s) {
   return lines;
 }
 
+std::set<std::string> names_in(const std::string& folder) {
+  std::set<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(folder)) names.insert(e.path().filename().string());
+  return names;
+}
+
 }  // namespace gesmi::test

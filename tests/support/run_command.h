@@ -2,6 +2,7 @@
 // Runs a built executable (e.g. build/bin/gesmi) from a test and captures its exit
 // code, standard output and standard error.
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ inline CommandResult run_gesmi(const std::vector<std::string>& args) { return ru
 
 /// A fresh empty temporary folder, removed at the end of the test program.
 std::string temp_folder(const std::string& tag);
+
+/// The names of the entries of a folder (what a command left there).
+std::set<std::string> names_in(const std::string& folder);
 
 /// Number of lines of s (a final line without newline counts).
 int line_count(const std::string& s);

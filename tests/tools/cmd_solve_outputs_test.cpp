@@ -14,12 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::set<std::string> names_in(const std::string& folder) {
-  std::set<std::string> names;
-  for (const auto& e : fs::directory_iterator(folder)) names.insert(e.path().filename().string());
-  return names;
-}
-
 TEST(CmdSolveOutputs, WritesTheResultAloneUnlessSiblingsAreAsked) {
   const std::string folder = temp_folder("solve-outputs");
   const std::string mission = folder + "/in/m.h5";

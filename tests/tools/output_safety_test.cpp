@@ -39,12 +39,6 @@ const std::string& mission() {
   return path;
 }
 
-std::set<std::string> names_in(const std::string& folder) {
-  std::set<std::string> names;
-  for (const auto& e : fs::directory_iterator(folder)) names.insert(e.path().filename().string());
-  return names;
-}
-
 // Runs a shell line whose '$GESMI' is the gesmi binary (environment, ulimit, trap).
 CommandResult run_shell(const std::string& line) {
   const std::string folder = temp_folder("shell");
