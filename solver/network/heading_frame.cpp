@@ -7,6 +7,7 @@
 #include "solver/interval/rounding.h"
 #include "solver/mission/meridian_convergence.h"
 #include "solver/network/sensor_boxes.h"
+#include "solver/network/sensor_kernel.h"
 #include "solver/network/step_chunks.h"
 
 namespace gesmi {
@@ -70,19 +71,24 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
   std::vector<std::vector<std::pair<std::size_t, Vec3I>>> apart(chunks);
   for_step_chunks(steps, chunks, [&](std::size_t chunk, std::size_t first, std::size_t last) {
     if (first == last) return;
-    SensorBoxes::SampleBoxes next = boxes.sample(first);
-    for (std::size_t k = first; k < last; ++k) {
-      const SensorBoxes::SampleBoxes current = next;
-      next = boxes.sample(k + 1);
+    const auto scalar_step = [&](std::size_t k) {
       SensorBoxes::StepTurn turn;
-      const Vec3I inc = boxes.step_increment(current, next, k, &turn);
+      const Vec3I inc = boxes.step_increment(boxes.sample(k), boxes.sample(k + 1), k, &turn);
       d.dx[k] = inc[0];
       d.dy[k] = inc[1];
       d.dz[k] = inc[2];
       priors.turn_north[k] = float_up(turn.north);
       priors.turn_east[k] = float_up(turn.east);
       if (turn.apart_hull) apart[chunk].emplace_back(k, *turn.apart_hull);
+    };
+    if (model.step_model == StepModel::rate_hull) {
+      for (std::size_t k = first; k < last; ++k) scalar_step(k);
+      return;
     }
+    // The kernel takes nearly every step; SensorBoxes the few it leaves (sensor_kernel.h).
+    const StepIncrementArrays out{d.dx.data(), d.dy.data(), d.dz.data(), priors.turn_north.data(),
+                                  priors.turn_east.data()};
+    for (const std::size_t k : kernel_step_increments(mission, model, first, last, out)) scalar_step(k);
   });
   for (const auto& hulls : apart) priors.apart_hulls.insert(priors.apart_hulls.end(), hulls.begin(), hulls.end());
   return priors;

@@ -9,23 +9,12 @@
 // empty result (lo > hi) stops the sweep and is normalised by the caller.
 
 #include <algorithm>
-#include <cfenv>
 
+#include "solver/interval/upward_rounding.h"
 #include "solver/tube/chain_sweep.h"
 
 namespace gesmi {
 namespace {
-
-class UpwardRounding {
- public:
-  UpwardRounding() : saved_(std::fegetround()) { std::fesetround(FE_UPWARD); }
-  ~UpwardRounding() { std::fesetround(saved_); }
-  UpwardRounding(const UpwardRounding&) = delete;
-  UpwardRounding& operator=(const UpwardRounding&) = delete;
-
- private:
-  int saved_;
-};
 
 // The loop-carried values are the negated lower bound and the upper bound, so the
 // dependency chain is one rounded-up addition and one min per step. The largest
