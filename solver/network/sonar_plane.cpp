@@ -21,10 +21,25 @@ bool boxes_beyond(const Vec3I& a, const Vec3I& b, double reach) {
   return sum > reach * reach * (1.0 + 1e-12);
 }
 
-Vec3I SonarPlane::body_prior() const {
-  const Interval across = side == SonarSide::starboard ? Interval::neg_reals() : Interval::pos_reals();
+Vec3I SonarPlane::body_prior(SonarSide on) const {
+  const Interval across = on == SonarSide::starboard ? Interval::neg_reals() : Interval::pos_reals();
   return Vec3I(Interval(-along_tolerance, along_tolerance), across, Interval::neg_reals());
 }
+
+Vec3I SonarPlane::rough_body_offset(const Vec3I& q, const Vec3I& m) const {
+  const Interval ez = intersect(q[2] - m[2], vertical());
+  if (ez.is_empty()) return Vec3I(ez, ez, ez);
+  return world_to_body(attitude, Vec3I(q[0] - m[0], q[1] - m[1], ez));
+}
+
+bool SonarPlane::may_hold(const Vec3I& rough_body_offset, SonarSide on) const {
+  const Vec3I prior = body_prior(on);
+  for (int i = 0; i < 3; ++i)
+    if (!rough_body_offset[i].intersects(prior[i])) return false;
+  return true;
+}
+
+Interval SonarPlane::vertical() const { return -(altitude + Interval(-depth_band, depth_band)); }
 
 namespace {
 
@@ -45,7 +60,7 @@ double largest_change(const Vec3I& before, const Vec3I& after) {
 
 bool SonarPlane::contract(Vec3I& q, Vec3I& m, Interval& r) const {
   const Vec3I prior = body_prior();
-  const Interval vertical = -(altitude + Interval(-depth_band, depth_band));  // e.z = p_z - m_z
+  const Interval vertical = this->vertical();
   Interval zero_x(0.0), zero_y(0.0), zero_z(0.0);
   bool ok = true;
   // A few rounds reach the local fixpoint: each round uses what the other frame

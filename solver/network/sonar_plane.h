@@ -27,8 +27,18 @@ struct SonarPlane {
   /// Contracts the robot's position q, the mine box m and the slant range r; false
   /// when they cannot satisfy the geometry (all three are then left empty).
   bool contract(Vec3I& q, Vec3I& m, Interval& r) const;
-  /// The robot-frame box of e allowed before any data.
-  Vec3I body_prior() const;
+  /// The robot-frame box of e allowed before any data, on this plane's side or another.
+  Vec3I body_prior() const { return body_prior(side); }
+  Vec3I body_prior(SonarSide on) const;
+  /// e = q - m rotated once into the robot frame, for cheap tests before contract():
+  /// empty when e.z misses the vertical band.
+  Vec3I rough_body_offset(const Vec3I& q, const Vec3I& m) const;
+  /// A necessary condition on one side: the rough body offset meets that side's prior.
+  /// False means contract() on that side would empty the boxes (it starts from q and m,
+  /// only narrows them, and interval operations are inclusion monotone).
+  bool may_hold(const Vec3I& rough_body_offset, SonarSide side) const;
+  /// The box of e.z = p_z - m_z: -(altitude ± depth band).
+  Interval vertical() const;
 };
 
 /// Distance between the points of two boxes, as an interval.

@@ -74,6 +74,8 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
       plane.depth_band = model.mine_depth_band;
       for (const std::size_t i : near) {
         const Vec3I& m = domains.mines[i];
+        const Vec3I rough = plane.rough_body_offset(p, m);
+        if (!plane.may_hold(rough, SonarSide::starboard) && !plane.may_hold(rough, SonarSide::port)) continue;
         // The interval test where the cheap one could not decide.
         const Interval distance = box_distance(p, m);
         if (!distance.intersects(swath)) continue;
@@ -81,6 +83,7 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
         Interval ranges = Interval::empty();
         for (const SonarSide side : {SonarSide::starboard, SonarSide::port}) {
           if (model.sonar_side != SonarSide::both && model.sonar_side != side) continue;
+          if (!plane.may_hold(rough, side)) continue;  // out of the plane, or on the other side
           ranges = hull(ranges, feasible_ranges(plane, p, m, reach, side));
         }
         if (ranges.is_empty()) continue;

@@ -10,8 +10,10 @@
 #include <map>
 
 #include "solver/mission/meridian_convergence.h"
+#include "solver/network/heading_frame.h"
 #include "solver/network/incremental_solver.h"
 #include "solver/network/outlier_solver.h"
+#include "solver/network/waterfall.h"
 #include "solver/sim/simulator.h"
 #include "solver/solve/solve_mission.h"
 
@@ -89,6 +91,20 @@ void BM_SolveMission(benchmark::State& state) {
   state.counters["steps"] = static_cast<double>(m.size());
 }
 BENCHMARK(BM_SolveMission)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+
+// The reconstructed waterfall of a solved reference mission (6 mines, 60,000 steps): what
+// solve_mission adds after propagation, with the heading frame's margins over the tube.
+void BM_Waterfall(benchmark::State& state) {
+  Mission m = reference().mission;
+  m.heading_frame_margin = meridian_convergence_within(48.212920614, 10000.0);
+  SolveOptions options;
+  options.waterfall = false;
+  const MissionSolution solved = solve_mission(m, options);
+  const double max_speed = speed_bound(m);
+  for (auto _ : state) benchmark::DoNotOptimize(compute_waterfall(m, m.model, solved.domains, nullptr, max_speed).lower.data());
+  state.counters["steps"] = static_cast<double>(m.size());
+}
+BENCHMARK(BM_Waterfall)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
 // Cold propagation on missions of 10^5, 10^6 and 10^7 steps (the survey repeated).
 void BM_ColdSolveScaling(benchmark::State& state) {
