@@ -135,7 +135,7 @@ void validate_mission(const Mission& m, const std::string& source) {
   }
 }
 
-Mission read_mission(const std::string& path) {
+Mission read_mission(const std::string& path, TruthReading truth) {
   const H5File f = H5File::open_read(path);
   Mission m;
   const std::int64_t version = check_format(f, kFormat, "gesmi mission", kVersions);
@@ -161,10 +161,7 @@ Mission read_mission(const std::string& path) {
     if (s.rank != 2 || s.columns != 3 || s.rows != n)
       throw FormatError(path + ": " + dataset + ": expected " + std::to_string(n) + " x 3, found " + std::to_string(s.rows) +
                         " x " + std::to_string(s.columns));
-    for (std::size_t c = 0; c < 3; ++c) {
-      out[c]->resize(n);
-      f.read_column_into(dataset, c, *out[c]);
-    }
+    f.read_columns_into(dataset, std::span<std::vector<double>* const>(out, 3));
   };
   std::vector<double>* attitude[3] = {&m.roll, &m.pitch, &m.heading};
   std::vector<double>* velocity[3] = {&m.vx, &m.vy, &m.vz};
@@ -187,18 +184,14 @@ Mission read_mission(const std::string& path) {
     const H5Shape s = f.shape("/gps/lonlat");
     if (s.rank != 2 || s.columns != 2 || s.rows != m.gps_time.size())
       throw FormatError(path + ": /gps/lonlat: expected " + std::to_string(m.gps_time.size()) + " x 2");
-    m.gps_longitude.resize(s.rows);
-    m.gps_latitude.resize(s.rows);
-    f.read_column_into("/gps/lonlat", 0, m.gps_longitude);
-    f.read_column_into("/gps/lonlat", 1, m.gps_latitude);
+    std::vector<double>* lonlat[2] = {&m.gps_longitude, &m.gps_latitude};
+    f.read_columns_into("/gps/lonlat", lonlat);
     if (f.has("/gps/halfwidth")) {
       const H5Shape h = f.shape("/gps/halfwidth");
       if (h.rank != 2 || h.columns != 2 || h.rows != s.rows)
         throw FormatError(path + ": /gps/halfwidth: expected " + std::to_string(s.rows) + " x 2");
-      m.gps_given_north_halfwidth.resize(h.rows);
-      m.gps_given_east_halfwidth.resize(h.rows);
-      f.read_column_into("/gps/halfwidth", 0, m.gps_given_north_halfwidth);
-      f.read_column_into("/gps/halfwidth", 1, m.gps_given_east_halfwidth);
+      std::vector<double>* halfwidth[2] = {&m.gps_given_north_halfwidth, &m.gps_given_east_halfwidth};
+      f.read_columns_into("/gps/halfwidth", halfwidth);
     }
   }
   if (require_all("/marks", {"time", "mine", "range", "side"})) {
@@ -206,6 +199,11 @@ Mission read_mission(const std::string& path) {
     m.mark_mine = f.read_ints("/marks/mine", 1);
     m.mark_range = f.read_doubles("/marks/range", 1);
     m.mark_side = f.read_ints("/marks/side", 1);
+  }
+  if (truth == TruthReading::skip) {
+    validate_mission(m, path);
+    fill_local_gps(m, path);
+    return m;
   }
   if (f.has("/truth/position")) {
     std::vector<double>* position[3] = {&m.truth_x, &m.truth_y, &m.truth_z};

@@ -9,8 +9,12 @@
 
 namespace gesmi::io {
 
+/// Whether read_mission() reads the simulated truth (/truth), which only commands that
+/// compare with it or write the mission again need.
+enum class TruthReading { read, skip };
+
 /// Reads and validates a mission; fills the GPS fixes in the local frame.
-Mission read_mission(const std::string& path);
+Mission read_mission(const std::string& path, TruthReading truth = TruthReading::read);
 /// Writes a mission atomically (temporary name, then rename).
 void write_mission(const Mission& mission, const std::string& path);
 

@@ -86,9 +86,9 @@ class H5File {
   std::vector<std::int32_t> read_ints(const std::string& dataset, int rank = 0) const;
   /// Reads into a caller-sized buffer (no extra copy); sizes must match.
   void read_doubles_into(const std::string& dataset, std::span<double> out) const;
-  /// Reads one column of a 2-D dataset straight into out (rows values): a mission's
-  /// N x 3 arrays load into three flat vectors without a transposing copy.
-  void read_column_into(const std::string& dataset, std::size_t column, std::span<double> out) const;
+  /// Reads a 2-D dataset of rows x columns.size() values, in one contiguous read, into
+  /// one flat vector per column (each sized to the rows): a mission's N x 3 arrays.
+  void read_columns_into(const std::string& dataset, std::span<std::vector<double>* const> columns) const;
 
   /// Creates a group (and its parents) if missing.
   void create_group(const std::string& group) { ensure_parent_groups(group + "/"); }
@@ -123,7 +123,7 @@ class H5File {
   H5Handle open_attribute(const std::string& object, const std::string& name) const;
   /// The shape, once class and stored size are known to be readable (integers or numbers).
   H5Shape checked_shape(const std::string& dataset, bool integers, int rank = 0) const;
-  void read_checked(const std::string& dataset, std::span<double> out, std::size_t column) const;
+  void read_checked(const std::string& dataset, std::span<double> out) const;
   H5Handle file_;
   std::string path_;
 };

@@ -81,30 +81,14 @@ H5Shape H5File::checked_shape(const std::string& dataset, bool integers, int ran
   return s;
 }
 
-void H5File::read_checked(const std::string& dataset, std::span<double> out, std::size_t column) const {
+void H5File::read_checked(const std::string& dataset, std::span<double> out) const {
   const H5Shape s = checked_shape(dataset, false);
-  const bool whole = column == std::string::npos;
-  if (whole && s.rows * s.columns != out.size())
+  if (s.rows * s.columns != out.size())
     fail(dataset, "expected " + std::to_string(out.size()) + " values, found " + std::to_string(s.rows * s.columns));
-  if (!whole && (s.rank != 2 || column >= s.columns))
-    fail(dataset, "expected a 2-D dataset with column " + std::to_string(column));
-  if (!whole && s.rows != out.size())
-    fail(dataset, "expected " + std::to_string(out.size()) + " rows, found " + std::to_string(s.rows));
   if (out.empty()) return;
   const H5Handle d = open_dataset(dataset);
   const H5Handle type(H5Dget_type(d.get()), H5Tclose);
-
-  H5Handle file_space, memory_space;
-  if (!whole) {
-    file_space = H5Handle(H5Dget_space(d.get()), H5Sclose);
-    const hsize_t start[2] = {0, column}, count[2] = {s.rows, 1};
-    const hsize_t memory_dims[1] = {s.rows};
-    memory_space = H5Handle(H5Screate_simple(1, memory_dims, nullptr), H5Sclose);
-    if (!file_space.valid() || !memory_space.valid() ||
-        H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr) < 0)
-      fail(dataset, "cannot select column " + std::to_string(column));
-  }
-  const hid_t memory = whole ? H5S_ALL : memory_space.get(), file = whole ? H5S_ALL : file_space.get();
+  const hid_t memory = H5S_ALL, file = H5S_ALL;
   const bool wide_integers = H5Tget_class(type.get()) == H5T_INTEGER && H5Tget_size(type.get()) > 4;
   if (!wide_integers) {
     if (H5Dread(d.get(), H5T_NATIVE_DOUBLE, memory, file, H5P_DEFAULT, out.data()) < 0)
@@ -127,17 +111,27 @@ void H5File::read_checked(const std::string& dataset, std::span<double> out, std
 }
 
 void H5File::read_doubles_into(const std::string& dataset, std::span<double> out) const {
-  read_checked(dataset, out, std::string::npos);
+  read_checked(dataset, out);
 }
 
-void H5File::read_column_into(const std::string& dataset, std::size_t column, std::span<double> out) const {
-  read_checked(dataset, out, column);
+void H5File::read_columns_into(const std::string& dataset, std::span<std::vector<double>* const> columns) const {
+  const H5Shape s = checked_shape(dataset, false, 2);  // before allocating
+  const std::size_t width = columns.size();
+  if (s.columns != width) fail(dataset, "expected " + std::to_string(width) + " columns, found " + std::to_string(s.columns));
+  // One read of the row-major block (a strided read per column costs more than the copy).
+  std::vector<double> rows(s.rows * width);
+  read_checked(dataset, rows);
+  for (std::size_t c = 0; c < width; ++c) {
+    std::vector<double>& out = *columns[c];
+    out.resize(s.rows);
+    for (std::size_t r = 0; r < s.rows; ++r) out[r] = rows[r * width + c];
+  }
 }
 
 std::vector<double> H5File::read_doubles(const std::string& dataset, int rank) const {
   const H5Shape s = checked_shape(dataset, false, rank);  // before allocating
   std::vector<double> values(s.rows * s.columns);
-  read_checked(dataset, values, std::string::npos);
+  read_checked(dataset, values);
   return values;
 }
 

@@ -30,20 +30,28 @@ double turn_widening(double margin, double other, double own) {
   return (margin * other + 0.5 * margin * margin * own) * up + std::numeric_limits<double>::min();
 }
 
-// |v|² over a box, rounded up (its square root is taken once, for the largest).
-double squared_norm_up(const Vec3I& v) {
-  return add_up(add_up(mul_up(v[0].mag(), v[0].mag()), mul_up(v[1].mag(), v[1].mag())), mul_up(v[2].mag(), v[2].mag()));
-}
-
 }  // namespace
 
 double speed_bound(const Mission& m) {
-  const SensorBoxes boxes(m, m.model, HeadingFrame{});
+  // The DVL boxes of SensorBoxes::velocity(), in plain doubles: every term is
+  // non-negative, so the roundings to nearest of the few operations per sample (8 at
+  // most) are covered by a relative 16 units in the last place, taken at the end, and
+  // underflow by the smallest normal number.
+  const double relative = m.model.dvl_relative + kFrameScaleMargin;
+  const std::vector<double>* readings[3] = {&m.vx, &m.vy, &m.vz};
+  const std::vector<double>* widths[3] = {&m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz};
   double largest = 0.0, longest = 0.0;
   for (std::size_t k = 0; k < m.size(); ++k) {
-    largest = std::max(largest, squared_norm_up(boxes.velocity(k)));
+    double squared = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const double speed = std::fabs((*readings[i])[k]);
+      const double bound = widths[i]->empty() ? relative * speed + m.model.dvl_absolute : (*widths[i])[k];
+      squared += (speed + bound) * (speed + bound);
+    }
+    if (!(squared <= largest)) largest = squared;  // a NaN stays, and gives the zone's margin
     if (k + 1 < m.size()) longest = std::max(longest, sub_up(m.time[k + 1], m.time[k]));
   }
+  largest = largest * (1.0 + 16.0 * std::numeric_limits<double>::epsilon()) + std::numeric_limits<double>::min();
   // Plus what max_acceleration adds within the longest step, on each axis (sqrt(3) < 1.7321).
   return add_up(sqrt_up(largest), mul_up(1.7321, mul_up(m.model.max_acceleration, mul_up(0.5, longest))));
 }

@@ -118,7 +118,8 @@ void bind_mission(py::module_& m) {
           py::arg("time"), py::arg("range"), py::arg("side") = "starboard", py::arg("mine") = -1,
           "Adds an operator's mark (mine -1: unknown), checked as the mission file reader checks marks");
 
-  m.def("read_mission", &io::read_mission, py::arg("path"), "Reads and validates a mission file (HDF5)");
+  m.def("read_mission", [](const std::string& path) { return io::read_mission(path); }, py::arg("path"),
+        "Reads and validates a mission file (HDF5), its truth included");
   m.def("write_mission", [](const Mission& s, const std::string& path) { io::write_mission(s, path); }, py::arg("mission"),
         py::arg("path"), "Writes a mission file atomically");
   m.def(

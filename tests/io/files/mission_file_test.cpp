@@ -61,6 +61,20 @@ TEST(MissionFile, RoundTripKeepsEveryField) {
   EXPECT_GE(r.gps_north_halfwidth[0], m.model.gps_metres);
 }
 
+TEST(MissionFile, ReadsTheSameNavigationWithoutTheTruth) {
+  Mission m = sample_mission();
+  m.half_widths.heading.assign(m.size(), 0.01);
+  const std::string path = test::temp_folder("mission-no-truth") + "/m.h5";
+  write_mission(m, path);
+  const Mission r = read_mission(path, TruthReading::skip);
+  EXPECT_TRUE(r.truth_x.empty() && r.truth_mines.empty() && r.truth_marks_mine.empty());
+  EXPECT_FALSE(m.truth_x.empty());
+  for (const auto field : {&Mission::time, &Mission::roll, &Mission::pitch, &Mission::heading, &Mission::vx, &Mission::vy,
+                           &Mission::vz, &Mission::altitude, &Mission::depth, &Mission::gps_longitude, &Mission::gps_latitude})
+    EXPECT_EQ(r.*field, m.*field);
+  EXPECT_EQ(r.half_widths.heading, m.half_widths.heading);
+}
+
 TEST(MissionFile, IsReadableByH5py) {
   const std::string path = test::temp_folder("mission") + "/m.h5";
   write_mission(sample_mission(), path);

@@ -85,7 +85,7 @@ TEST(HostileHdf5, MissionAttributesMustBeOneValueOfTheRightKind) {
       {"del f.attrs['format_version']", "missing attribute format_version"},
       {"f['/model'].attrs['heading'] = np.longdouble(0.01)", "/model: attribute heading is wider than 64 bits"},
   };
-  for (const Case& c : cases) expect_refused(samples().mission, c, read_mission);
+  for (const Case& c : cases) expect_refused(samples().mission, c, [](const std::string& p) { return read_mission(p); });
 }
 
 TEST(HostileHdf5, MissionDatasetsAreCheckedBeforeAnythingIsAllocated) {
@@ -119,7 +119,7 @@ TEST(HostileHdf5, MissionDatasetsAreCheckedBeforeAnythingIsAllocated) {
       {"f['/truth/position'][3, 1] = np.nan", "/truth/position: row 3: position is NaN"},
       {"f['/truth/mines'][0, 0] = np.inf", "/truth/mines: row 0: position is infinite"},
   };
-  for (const Case& c : cases) expect_refused(samples().mission, c, read_mission);
+  for (const Case& c : cases) expect_refused(samples().mission, c, [](const std::string& p) { return read_mission(p); });
 }
 
 TEST(HostileHdf5, FilesAUserMayWriteWithH5pyAreStillRead) {

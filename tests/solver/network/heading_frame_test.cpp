@@ -98,5 +98,42 @@ TEST(HeadingFrame, WidensAboutAsMuchAsTurningTheHeadingBoxItself) {
   }
 }
 
+// speed_bound() against the farthest corner of every sample's DVL box (the model's bound
+// with the frame scale margin, or the per-sample half-widths), in long double, plus
+// 1.7321 max_acceleration dt / 2 for the longest step: never below, and within 1e-9.
+long double farthest_speed(const Mission& m) {
+  long double largest = 0.0L, longest = 0.0L;
+  const std::vector<double>* readings[3] = {&m.vx, &m.vy, &m.vz};
+  const std::vector<double>* widths[3] = {&m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz};
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    long double squared = 0.0L;
+    for (int i = 0; i < 3; ++i) {
+      const long double v = std::fabs(static_cast<long double>((*readings[i])[k]));
+      const long double bound =
+          widths[i]->empty() ? (static_cast<long double>(m.model.dvl_relative) + kFrameScaleMargin) * v + m.model.dvl_absolute
+                             : (*widths[i])[k];
+      squared += (v + bound) * (v + bound);
+    }
+    largest = std::max(largest, std::sqrt(squared));
+    if (k + 1 < m.size()) longest = std::max(longest, static_cast<long double>(m.time[k + 1]) - m.time[k]);
+  }
+  return largest + 1.7321L * m.model.max_acceleration * longest / 2.0L;  // sqrt(3) rounded up, as documented
+}
+
+TEST(HeadingFrame, SpeedBoundHoldsTheFarthestCornerOfEveryDvlBox) {
+  const SensorModel model = test::model_with(StepModel::trapezoid, 1.0);
+  for (const SmoothTruth& truth : test::truths()) {
+    Mission m = test::mission_of(truth, model, 400, 7, 0.0);
+    for (const bool per_sample : {false, true}) {
+      if (per_sample)
+        for (auto* w : {&m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz}) w->assign(m.size(), 0.03);
+      const long double exact = farthest_speed(m);
+      const double bound = speed_bound(m);
+      EXPECT_GE(bound, exact);
+      EXPECT_LE(bound, exact * (1.0L + 1e-9L));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gesmi
