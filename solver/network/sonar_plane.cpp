@@ -28,8 +28,17 @@ Vec3I SonarPlane::body_prior(SonarSide on) const {
 
 Vec3I SonarPlane::rough_body_offset(const Vec3I& q, const Vec3I& m) const {
   const Interval ez = intersect(q[2] - m[2], vertical());
-  if (ez.is_empty()) return Vec3I(ez, ez, ez);
-  return world_to_body(attitude, Vec3I(q[0] - m[0], q[1] - m[1], ez));
+  const Interval ex = q[0] - m[0], ey = q[1] - m[1];
+  // world_to_body (euler.h) term by term, the along-track component first: most mines in
+  // reach are ahead or behind, out of the plane, and need no more.
+  const Attitude<Interval>& a = attitude;
+  const Interval x1 = a.heading.cos * ex + a.heading.sin * ey;
+  const Interval along = a.pitch.cos * x1 - a.pitch.sin * ez;
+  if (ez.is_empty() || !along.intersects(Interval(-along_tolerance, along_tolerance)))
+    return Vec3I(Interval::empty(), Interval::empty(), Interval::empty());
+  const Interval y1 = a.heading.cos * ey - a.heading.sin * ex;
+  const Interval z2 = a.pitch.sin * x1 + a.pitch.cos * ez;
+  return Vec3I(along, a.roll.cos * y1 + a.roll.sin * z2, a.roll.cos * z2 - a.roll.sin * y1);
 }
 
 bool SonarPlane::may_hold(const Vec3I& rough_body_offset, SonarSide on) const {

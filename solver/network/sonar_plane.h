@@ -31,7 +31,8 @@ struct SonarPlane {
   Vec3I body_prior() const { return body_prior(side); }
   Vec3I body_prior(SonarSide on) const;
   /// e = q - m rotated once into the robot frame, for cheap tests before contract():
-  /// empty when e.z misses the vertical band.
+  /// empty when e.z misses the vertical band or the along-track component misses the
+  /// plane's tolerance.
   Vec3I rough_body_offset(const Vec3I& q, const Vec3I& m) const;
   /// A necessary condition on one side: the rough body offset meets that side's prior.
   /// False means contract() on that side would empty the boxes (it starts from q and m,
