@@ -1,0 +1,45 @@
+# Start-up cost of the gesmi command (docs/performance.md, "Start-up"). Every shared
+# library costs the dynamic loader a mapping and symbol lookups at each start: Debian's
+# shared HDF5 loads libcurl and its ~25 libraries for a network driver gesmi never uses,
+# and cairo loads X11's; with them `gesmi --help` took 15 ms of CPU, 58 libraries. The
+# gesmi command links instead the static archives Debian ships in the same -dev packages
+# (same versions): the linker takes only the objects gesmi calls, and --as-needed drops
+# the shared libraries nothing refers to any more. The Python module and the tests keep
+# the shared libraries (a static HDF5 next to h5py's shared one in one process would be
+# two HDF5 libraries). GESMI_STATIC_ARCHIVES=OFF links everything shared.
+option(GESMI_STATIC_ARCHIVES "link the gesmi command with the static archives of its dependencies" ON)
+
+# gesmi_link_static_archives(<target> <shared libraries the target links when OFF>...)
+function(gesmi_link_static_archives target)
+  target_include_directories(${target} SYSTEM PRIVATE ${Boost_INCLUDE_DIRS})
+  if(NOT GESMI_STATIC_ARCHIVES)
+    target_link_libraries(${target} PRIVATE ${ARGN})
+    return()
+  endif()
+  get_filename_component(hdf5_dir "${HDF5_C_LIBRARY_hdf5}" DIRECTORY)
+  # In link order: each archive before the libraries it calls.
+  set(archives)
+  foreach(entry IN ITEMS "boost_program_options" "hdf5:${hdf5_dir}" "yaml-cpp" "GeographicLib" "cairo" "pixman-1"
+                         "png16" "crypto")
+    string(REPLACE ":" ";" parts "${entry}")
+    list(GET parts 0 name)
+    list(LENGTH parts count)
+    set(hints)
+    if(count GREATER 1)
+      list(GET parts 1 hints)
+    endif()
+    find_library(GESMI_ARCHIVE_${name} NAMES lib${name}.a HINTS ${hints} NO_CMAKE_SYSTEM_PATH)
+    if(NOT GESMI_ARCHIVE_${name})
+      find_library(GESMI_ARCHIVE_${name} NAMES lib${name}.a HINTS ${hints})
+    endif()
+    if(NOT GESMI_ARCHIVE_${name})
+      message(FATAL_ERROR "lib${name}.a not found: run tools/install_deps.sh, or configure with -DGESMI_STATIC_ARCHIVES=OFF")
+    endif()
+    list(APPEND archives ${GESMI_ARCHIVE_${name}})
+  endforeach()
+  # What the archives call in shared form: compression for HDF5, fonts for cairo.
+  pkg_check_modules(GESMI_FONTS REQUIRED IMPORTED_TARGET fontconfig freetype2)
+  target_link_options(${target} PRIVATE -Wl,--as-needed)
+  target_link_libraries(${target} PRIVATE ${archives} ${HDF5_C_LIBRARY_sz} PkgConfig::GESMI_FONTS ${HDF5_C_LIBRARY_z}
+                                          ${CMAKE_DL_LIBS} Threads::Threads)
+endfunction()
