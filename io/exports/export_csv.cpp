@@ -25,10 +25,7 @@ class Row {
   explicit Row(std::ostream& out) : out_(out) {}
   Row& operator<<(double x) {
     if (!line_.empty()) line_ += ',';
-    char buffer[32];
-    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);  // shortest exact form
-    line_.append(buffer, error == std::errc() ? end : buffer);
-    if (error != std::errc()) line_ += format_number(x);
+    append_number(line_, x);  // shortest exact form
     return *this;
   }
   Row& text(std::string_view s) {

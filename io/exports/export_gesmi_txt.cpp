@@ -42,19 +42,25 @@ void write_gesmi_txt(const Mission& m, const std::string& source, std::ostream& 
       << "# t roll droll pitch dpitch heading dheading vx dvx vy dvy vz dvz depth ddepth altitude daltitude x dx y dy\n";
   std::string line;
   for (std::size_t k = 0; k < n; ++k) {
-    line = format_number(m.time[k]);
+    // One reused line buffer, numbers appended in place (no allocation per number).
+    line.clear();
+    append_number(line, m.time[k]);
+    const auto field = [&](double x) {
+      line += ' ';
+      append_number(line, x);
+    };
     for (std::size_t c = 0; c < GesmiColumn::x; ++c) {
       const double value = (*values[c])[k];
-      const double bound = given[c]->empty() ? model_half_width(m.model, c, value) : (*given[c])[k];
-      line += ' ' + format_number(value) + ' ' + format_number(bound);
+      field(value);
+      field(given[c]->empty() ? model_half_width(m.model, c, value) : (*given[c])[k]);
     }
     if (fix_at[k] >= 0) {
       const auto i = static_cast<std::size_t>(fix_at[k]);
       const bool own = !m.gps_given_north_halfwidth.empty();
-      line += ' ' + format_number(m.gps_north[i]) + ' ' +
-              format_number(own ? m.gps_given_north_halfwidth[i] : m.gps_north_halfwidth[i]) + ' ' +
-              format_number(m.gps_east[i]) + ' ' +
-              format_number(own ? m.gps_given_east_halfwidth[i] : m.gps_east_halfwidth[i]);
+      field(m.gps_north[i]);
+      field(own ? m.gps_given_north_halfwidth[i] : m.gps_north_halfwidth[i]);
+      field(m.gps_east[i]);
+      field(own ? m.gps_given_east_halfwidth[i] : m.gps_east_halfwidth[i]);
     } else {
       line += " nan nan nan nan";
     }

@@ -27,13 +27,23 @@ std::optional<long long> parse_integer(std::string_view text) {
   return value;
 }
 
+void append_number(std::string& out, double value) {
+  if (std::isnan(value)) {
+    out += "nan";
+  } else if (std::isinf(value)) {
+    out += value > 0 ? "inf" : "-inf";
+  } else {
+    char buffer[32];
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    (void)error;  // 32 characters hold any double's shortest form
+    out.append(buffer, end);
+  }
+}
+
 std::string format_number(double value) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  char buffer[32];
-  const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
-  (void)error;  // 32 characters hold any double's shortest form
-  return std::string(buffer, end);
+  std::string text;
+  append_number(text, value);
+  return text;
 }
 
 std::string_view non_finite_reason(double value) {

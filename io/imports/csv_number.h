@@ -19,6 +19,8 @@ std::optional<long long> parse_integer(std::string_view text);
 /// Shortest decimal text that parses back to exactly `value` ("nan", "inf", "-inf"
 /// for the non-finite values).
 std::string format_number(double value);
+/// The same text appended to `out`, without allocating per number (the exporters' rows).
+void append_number(std::string& out, double value);
 
 /// Why a number read from a file is not usable: "is NaN", "is infinite", or empty
 /// when it is finite.

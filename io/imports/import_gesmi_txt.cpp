@@ -18,15 +18,18 @@ constexpr const char* kNames[GesmiColumn::count] = {"roll", "pitch", "heading", 
 constexpr const char* kRowShape =
     "21 numbers: t, then value and half-width of roll, pitch, heading, vx, vy, vz, depth, altitude, x, y";
 
+// Blanks of the format: ASCII space, tab and the CR of CRLF files (no locale lookup).
+bool blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
 void split_whitespace(const std::string& line, std::vector<std::string_view>& tokens) {
   tokens.clear();
   const std::string_view s(line);
   std::size_t i = 0;
   while (true) {
-    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    while (i < s.size() && blank(s[i])) ++i;
     if (i == s.size()) return;
     const std::size_t start = i;
-    while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    while (i < s.size() && !blank(s[i])) ++i;
     tokens.push_back(s.substr(start, i - start));
   }
 }
