@@ -222,7 +222,7 @@ void write_result(const SolveResult& r, const std::string& path) {
   out.commit();
 }
 
-SolveResult read_result(const std::string& path, bool with_waterfall) {
+SolveResult read_result(const std::string& path, ResultParts parts) {
   const H5File f = H5File::open_read(path);
   SolveResult r;
   MissionSolution& s = r.solution;
@@ -271,10 +271,12 @@ SolveResult read_result(const std::string& path, bool with_waterfall) {
     if (!std::isfinite(s.time[k]) || (k > 0 && !(s.time[k] > s.time[k - 1])))
       bad(f, "/time", "row " + std::to_string(k) + ": times must be finite and increase");
   TubeDomains& d = s.domains;
-  std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
-  read_bounds(f, "/tube", tube, n, verified);
-  std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
-  read_bounds(f, "/increments", increments, n - 1, verified);
+  if (parts.tube) {
+    std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
+    read_bounds(f, "/tube", tube, n, verified);
+    std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
+    read_bounds(f, "/increments", increments, n - 1, verified);
+  }
   std::vector<Interval> mx, my, mz;
   std::vector<Interval>* mines[3] = {&mx, &my, &mz};
   const std::size_t k = static_cast<std::size_t>(s.mine_count);
@@ -321,8 +323,8 @@ SolveResult read_result(const std::string& path, bool with_waterfall) {
                                 std::to_string(s.mine_count) + " mines (-1 for unknown)");
     if (verified && s.mark_side[j] != 1 && s.mark_side[j] != -1) bad(f, "/marks/side", row + ": side must be +1 or -1");
   }
-  if (with_waterfall && r.format_version >= 3) read_waterfall_cells(f, n, k, s.waterfall);
-  if (with_waterfall && r.format_version < 3) {
+  if (parts.waterfall && r.format_version >= 3) read_waterfall_cells(f, n, k, s.waterfall);
+  if (parts.waterfall && r.format_version < 3) {
     const H5Shape ws = f.shape("/waterfall/lower");
     if (ws.rows != n || (k > 0 && ws.columns != k))
       bad(f, "/waterfall/lower", "expected " + std::to_string(n) + " x " + std::to_string(k));

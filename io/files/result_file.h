@@ -27,10 +27,17 @@ struct SolveResult {
   std::int64_t format_version = 2;
 };
 
+/// The parts of a result a reader needs besides its attributes, times, mine boxes and
+/// mark table. Parts left out stay empty; the root digest still covers their digests,
+/// and every dataset read is checked against its own.
+struct ResultParts {
+  bool tube = true;  // the tube and the increments (warm starts, exports)
+  bool waterfall = true;
+};
+
 void write_result(const SolveResult& result, const std::string& path);
 /// Reads a result; FormatError naming the file and dataset when it is not a valid
-/// gesmi result or differs from what gesmi wrote (the waterfall is read only when
-/// with_waterfall).
-SolveResult read_result(const std::string& path, bool with_waterfall = true);
+/// gesmi result or differs from what gesmi wrote.
+SolveResult read_result(const std::string& path, ResultParts parts = {});
 
 }  // namespace gesmi::io

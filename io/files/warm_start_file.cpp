@@ -13,7 +13,7 @@ MissionSolution read_warm_start(const std::string& path, const Mission& mission)
 }
 
 MissionSolution read_warm_start(const std::string& path, const Mission& mission, const std::string& navigation) {
-  SolveResult previous = read_result(path, true);  // its waterfall is reused where unchanged
+  SolveResult previous = read_result(path);  // its waterfall is reused where unchanged
   const auto refuse = [&](const std::string& why) { throw FormatError("--from " + path + ": " + why); };
   if (previous.format_version < 2)
     refuse("written by an earlier gesmi, without the digests a warm start checks; run a cold solve");

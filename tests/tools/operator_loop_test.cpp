@@ -136,7 +136,7 @@ TEST(OperatorLoop, MarksWithoutNumbersKeepTheirTrueMine) {
     const std::string mission = simulate(dir, {"--seed", seed, "--unassociated", "1"});
     expect_ok(run_gesmi({"solve", mission, "-o", dir + "/r.h5"}));
     const Mission m = io::read_mission(mission);
-    const MissionSolution r = io::read_result(dir + "/r.h5", false).solution;
+    const MissionSolution r = io::read_result(dir + "/r.h5", {.waterfall = false}).solution;
     // With every number removed the mines are only defined up to relabelling: the
     // solver labels them in order of first detection. Relabel the truth the same way.
     std::vector<std::size_t> order(m.mark_count());
@@ -195,9 +195,9 @@ TEST(OperatorLoop, OutlierTolerantSolveNamesTheInjectedMarks) {
     const CommandResult plain = run_gesmi({"solve", mission, "-o", dir + "/plain.h5"});
     EXPECT_EQ(plain.exit_code, 3) << plain.err;
     EXPECT_TRUE(fs::exists(dir + "/plain.h5"));  // written, marked inconsistent
-    EXPECT_FALSE(io::read_result(dir + "/plain.h5", false).solution.report.consistent);
+    EXPECT_FALSE(io::read_result(dir + "/plain.h5", {.waterfall = false}).solution.report.consistent);
     expect_ok(run_gesmi({"solve", mission, "--max-outliers", "2", "-o", dir + "/r.h5"}));
-    const MissionSolution r = io::read_result(dir + "/r.h5", false).solution;
+    const MissionSolution r = io::read_result(dir + "/r.h5", {.waterfall = false}).solution;
     const Mission m = io::read_mission(mission);
     EXPECT_EQ(r.report.minimal_outliers, std::stoi(n));
     for (std::size_t j = 0; j < m.mark_count(); ++j)

@@ -24,7 +24,7 @@ int run_candidates(std::span<const std::string> args) {
   if (!parse_options(args, options, positional, v, "gesmi candidates RESULT.h5 [--csv OUT.csv]")) return kExitOk;
   io::OutputSet outputs(input_files(v, {"result"}));
   if (v.count("csv")) outputs.check(v["csv"].as<std::string>());
-  const io::SolveResult file = io::read_result(v["result"].as<std::string>());
+  const io::SolveResult file = io::read_result(v["result"].as<std::string>(), {.tube = false});
   const MissionSolution& r = file.solution;
   const std::vector<LookAgainWindow> windows = look_again_windows(r.waterfall, r.time, r.mark_time, r.candidates);
   std::string csv = "mine,t_start,t_end,range_lo,range_hi\n";

@@ -49,7 +49,7 @@ int run_demo(std::span<const std::string> args) {
   if (const int code = run_command("waterfall", {result, "-o", dir + "/waterfall.png"})) return code;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const io::SolveResult file = io::read_result(result, false);
+  const io::SolveResult file = io::read_result(result, {.tube = true, .waterfall = false});
   const MissionSolution& r = file.solution;
   std::printf("\nsummary: %s, %lld sweeps, propagation %.1f ms, whole demo %.1f s\n",
               r.report.consistent ? "consistent" : "INCONSISTENT", static_cast<long long>(r.report.sweeps),

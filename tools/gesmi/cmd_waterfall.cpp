@@ -30,7 +30,7 @@ int run_waterfall(std::span<const std::string> args) {
   const std::string output = v["output"].as<std::string>();
   io::OutputSet outputs(input_files(v, {"result"}));
   outputs.check(output);
-  const io::SolveResult file = io::read_result(v["result"].as<std::string>());
+  const io::SolveResult file = io::read_result(v["result"].as<std::string>(), {.tube = false});
   const MissionSolution& r = file.solution;
   io::WaterfallPicture picture;
   picture.waterfall = &r.waterfall;

@@ -165,6 +165,23 @@ TEST(HostileHdf5, EditedResultsAreRefusedNamingWhatDiffers) {
   for (const Case& c : cases) expect_refused(samples().result, c, [](const std::string& p) { return read_result(p); });
 }
 
+TEST(HostileHdf5, PartialReadsCheckWhatTheyReadAndTheRootDigest) {
+  // `gesmi waterfall` and `candidates` read no tube: an edited waterfall, mark table or
+  // root attribute is still refused; an edited tube is not read, hence not used.
+  const auto without_tube = [](const std::string& p) { return read_result(p, {.tube = false}); };
+  const Case cases[] = {
+      {"s = f['/waterfall/step'][:]\ns[[0, 1]] = s[[1, 0]] + 1\nf['/waterfall/step'][:] = s", "/waterfall/step: contents differ"},
+      {"c = f['/marks/candidates'][:]\nc[:] = 1\nf['/marks/candidates'][:] = c", "/marks/candidates: contents differ"},
+      {"f.attrs['sweeps'] = np.int64(999)", "/: attributes or dataset digests differ"},
+      {"f['/tube/lower'].attrs['sha256'] = 'ab'", "/: attributes or dataset digests differ"},
+  };
+  for (const Case& c : cases) expect_refused(samples().result, c, without_tube);
+  const std::string tube_edited = edited(samples().result, "u = f['/tube/upper'][:]\nu[100:200] += 50\nf['/tube/upper'][:] = u");
+  const SolveResult partial = without_tube(tube_edited);
+  EXPECT_TRUE(partial.solution.domains.px.empty());
+  EXPECT_FALSE(partial.solution.waterfall.lower.empty());
+}
+
 TEST(HostileHdf5, ResultsOfEarlierVersionsAreReadButCheckedValueByValue) {
   // A result as gesmi 0.1 wrote it: no format_version, no digests, a dense waterfall.
   const std::string strip =
