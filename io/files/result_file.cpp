@@ -112,28 +112,18 @@ void write_waterfall_cells(H5File& f, const Waterfall& w, std::size_t steps_in_t
   // Cells not written would read back as "no mine can appear there".
   if (w.steps != steps_in_tube || w.mines != mine_count)
     throw FormatError(path + ": the solution has no waterfall to write (solve with the waterfall computed)");
-  std::vector<std::int32_t> steps, mines;
-  std::vector<double> lower, upper;
-  for (std::size_t k = 0; k < w.steps; ++k)
-    for (std::size_t i = 0; i < w.mines; ++i)
-      if (w.feasible(k, i)) {
-        steps.push_back(static_cast<std::int32_t>(k));
-        mines.push_back(static_cast<std::int32_t>(i));
-        lower.push_back(w.lo(k, i));
-        upper.push_back(w.hi(k, i));
-      }
-  write_digested(f, "/waterfall/step", steps, steps.size());
-  write_digested(f, "/waterfall/mine", mines, mines.size());
-  write_digested(f, "/waterfall/lower", lower, lower.size());
-  write_digested(f, "/waterfall/upper", upper, upper.size());
+  write_digested(f, "/waterfall/step", w.step, w.cells());
+  write_digested(f, "/waterfall/mine", w.mine, w.cells());
+  write_digested(f, "/waterfall/lower", w.lower, w.cells());
+  write_digested(f, "/waterfall/upper", w.upper, w.cells());
 }
 
 // The waterfall of n steps and k mines from its cells (format 3), checked: equal
 // lengths, steps and mines in range, cells in strictly increasing order, finite bounds
 // in order.
 void read_waterfall_cells(const H5File& f, std::size_t n, std::size_t k, Waterfall& w) {
-  const std::vector<std::int32_t> steps = f.read_ints("/waterfall/step", 1), mines = f.read_ints("/waterfall/mine", 1);
-  const std::vector<double> lower = f.read_doubles("/waterfall/lower", 1), upper = f.read_doubles("/waterfall/upper", 1);
+  std::vector<std::int32_t> steps = f.read_ints("/waterfall/step", 1), mines = f.read_ints("/waterfall/mine", 1);
+  std::vector<double> lower = f.read_doubles("/waterfall/lower", 1), upper = f.read_doubles("/waterfall/upper", 1);
   const std::size_t cells = steps.size();
   for (const auto& [name, size] : {std::pair{"/waterfall/mine", mines.size()}, std::pair{"/waterfall/lower", lower.size()},
                                    std::pair{"/waterfall/upper", upper.size()}})
@@ -142,11 +132,6 @@ void read_waterfall_cells(const H5File& f, std::size_t n, std::size_t k, Waterfa
   verify_digest(f, "/waterfall/mine", mines, cells, 1);
   verify_digest(f, "/waterfall/lower", lower, cells, 1);
   verify_digest(f, "/waterfall/upper", upper, cells, 1);
-  w.steps = n;
-  w.mines = k;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  w.lower.assign(n * k, nan);
-  w.upper.assign(n * k, nan);
   std::size_t previous = 0;
   for (std::size_t c = 0; c < cells; ++c) {
     const std::string row = "row " + std::to_string(c);
@@ -159,9 +144,13 @@ void read_waterfall_cells(const H5File& f, std::size_t n, std::size_t k, Waterfa
     previous = cell;
     if (!std::isfinite(lower[c]) || !std::isfinite(upper[c]) || !(lower[c] <= upper[c]))
       bad(f, "/waterfall/lower", row + ": bounds must be finite with lower <= upper");
-    w.lower[cell] = lower[c];
-    w.upper[cell] = upper[c];
   }
+  w.steps = n;
+  w.mines = k;
+  w.step = std::move(steps);
+  w.mine = std::move(mines);
+  w.lower = std::move(lower);
+  w.upper = std::move(upper);
 }
 
 }  // namespace
@@ -328,21 +317,22 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     const H5Shape ws = f.shape("/waterfall/lower");
     if (ws.rows != n || (k > 0 && ws.columns != k))
       bad(f, "/waterfall/lower", "expected " + std::to_string(n) + " x " + std::to_string(k));
+    // Formats 1 and 2: a dense steps x mines table, NaN where a mine cannot appear.
+    const std::vector<double> lower = f.read_doubles("/waterfall/lower"), upper = f.read_doubles("/waterfall/upper");
+    if (upper.size() != lower.size()) bad(f, "/waterfall/upper", "shape differs from /waterfall/lower");
+    if (k == 0 && !lower.empty()) bad(f, "/waterfall/lower", "cells in a result without mines");
+    if (verified) {
+      verify_digest(f, "/waterfall/lower", lower, ws.rows, ws.columns);
+      verify_digest(f, "/waterfall/upper", upper, ws.rows, ws.columns);
+    }
     Waterfall& w = s.waterfall;
     w.steps = n;
     w.mines = k;
-    w.lower = f.read_doubles("/waterfall/lower");
-    w.upper = f.read_doubles("/waterfall/upper");
-    if (w.upper.size() != w.lower.size())
-      bad(f, "/waterfall/upper", "shape differs from /waterfall/lower");
-    if (verified) {
-      verify_digest(f, "/waterfall/lower", w.lower, ws.rows, ws.columns);
-      verify_digest(f, "/waterfall/upper", w.upper, ws.rows, ws.columns);
-    }
-    for (std::size_t i = 0; i < w.lower.size(); ++i) {
-      const double lo = w.lower[i], hi = w.upper[i];
-      if (!(std::isnan(lo) && std::isnan(hi)) && !(lo <= hi))
-        bad(f, "/waterfall", "cell " + std::to_string(i) + ": lower bound above upper bound");
+    for (std::size_t c = 0; c < lower.size(); ++c) {
+      const double lo = lower[c], hi = upper[c];
+      if (std::isnan(lo) && std::isnan(hi)) continue;
+      if (!(lo <= hi)) bad(f, "/waterfall", "cell " + std::to_string(c) + ": lower bound above upper bound");
+      w.add(c / k, c % k, lo, hi);
     }
   }
   if (verified) {

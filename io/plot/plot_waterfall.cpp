@@ -20,14 +20,14 @@ void write_waterfall_png(const WaterfallPicture& pic, const std::string& path) {
                       static_cast<double>(top), static_cast<double>(column_width), static_cast<double>(height), true};
     // One pixel row covers several steps: shade the hull of their feasible ranges.
     const auto rows = static_cast<std::size_t>(height);
-    std::size_t k = 0;
-    for (std::size_t row = 0; row < rows && k < w.steps; ++row) {
+    std::size_t c = 0;  // the next cell, in step order
+    for (std::size_t row = 0; row < rows && c < w.cells(); ++row) {
       const double row_end = t0 + (t1 - t0) * static_cast<double>(row + 1) / static_cast<double>(rows);
       double lo = 1e300, hi = -1e300;
-      for (; k < w.steps && pic.time[k] <= row_end; ++k) {
-        if (!w.feasible(k, i)) continue;
-        lo = std::min(lo, w.lo(k, i));
-        hi = std::max(hi, w.hi(k, i));
+      for (; c < w.cells() && pic.time[static_cast<std::size_t>(w.step[c])] <= row_end; ++c) {
+        if (static_cast<std::size_t>(w.mine[c]) != i) continue;
+        lo = std::min(lo, w.lower[c]);
+        hi = std::max(hi, w.upper[c]);
       }
       if (lo > hi) continue;
       const double x0 = f.px(std::max(lo, 0.0)), x1 = f.px(std::min(hi, pic.max_range));

@@ -21,36 +21,35 @@ std::vector<LookAgainWindow> look_again_windows(const Waterfall& w, std::span<co
         if ((mark_candidates[j] >> i & 1) && mark_time[j] >= t0 && mark_time[j] <= t1) return true;
       return false;
     };
-    std::size_t k = 0;
-    while (k < w.steps) {
-      if (!w.feasible(k, i)) {
-        ++k;
-        continue;
-      }
+    // The steps where mine i can appear, in order, with their cells.
+    std::vector<std::size_t> cells;
+    for (std::size_t c = 0; c < w.cells(); ++c)
+      if (static_cast<std::size_t>(w.mine[c]) == i) cells.push_back(c);
+    const auto step_of = [&](std::size_t n) { return static_cast<std::size_t>(w.step[cells[n]]); };
+    for (std::size_t n = 0; n < cells.size(); ++n) {
       LookAgainWindow win;
       win.mine = static_cast<int>(i);
-      win.k_start = k;
-      win.range_lo = w.lo(k, i);
-      win.range_hi = w.hi(k, i);
+      win.k_start = step_of(n);
+      win.range_lo = w.lower[cells[n]];
+      win.range_hi = w.upper[cells[n]];
       // Extend over feasible steps, bridging gaps shorter than kMaxGap seconds (one
-      // look at the record covers them).
+      // look at the record covers them): the next feasible step joins when the last
+      // step before it is within kMaxGap of the window's current end.
       constexpr double kMaxGap = 1.0;
-      while (true) {
-        std::size_t next = k + 1;
-        while (next < w.steps && !w.feasible(next, i) && time[next] - time[k] <= kMaxGap) ++next;
-        if (next >= w.steps || !w.feasible(next, i)) break;
-        k = next;
-        win.range_lo = std::min(win.range_lo, w.lo(k, i));
-        win.range_hi = std::max(win.range_hi, w.hi(k, i));
+      while (n + 1 < cells.size()) {
+        const std::size_t k = step_of(n), next = step_of(n + 1);
+        if (next != k + 1 && !(time[next - 1] - time[k] <= kMaxGap)) break;
+        ++n;
+        win.range_lo = std::min(win.range_lo, w.lower[cells[n]]);
+        win.range_hi = std::max(win.range_hi, w.upper[cells[n]]);
       }
-      win.k_end = k;
+      win.k_end = step_of(n);
       win.t_start = time[win.k_start];
       win.t_end = time[win.k_end];
       // A detection between two samples at the window's edges still belongs to it.
       const double t0 = win.k_start > 0 ? time[win.k_start - 1] : win.t_start;
       const double t1 = win.k_end + 1 < w.steps ? time[win.k_end + 1] : win.t_end;
       if (!explained(t0, t1)) windows.push_back(win);
-      ++k;
     }
   }
   std::stable_sort(windows.begin(), windows.end(), [](const LookAgainWindow& a, const LookAgainWindow& b) {

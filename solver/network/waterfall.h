@@ -2,9 +2,11 @@
 // The reconstructed waterfall (seed 001, section V-D, Fig. 8): for each time step
 // and mine, the interval of slant ranges ||e|| at which the mine can appear on the
 // sonar record, i.e. lie in the sonar plane, on the sonar's side, below the robot
-// and within the sonar's range, given the final tube and mine box. Where that is
-// impossible both bounds are NaN.
+// and within the sonar's range, given the final tube and mine box. Only the feasible
+// cells are kept (a mine is within the sonar's reach on few steps): elsewhere the
+// mine cannot appear.
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -15,11 +17,30 @@ namespace gesmi {
 
 struct Waterfall {
   std::size_t steps = 0, mines = 0;
-  std::vector<double> lower, upper;  // steps x mines, row-major (index k * mines + i)
+  /// The feasible cells in strictly increasing (step, mine) order, as the result file
+  /// stores them: mine mine[c] can appear at step step[c] at slant ranges within
+  /// [lower[c], upper[c]].
+  std::vector<std::int32_t> step, mine;
+  std::vector<double> lower, upper;
 
-  double lo(std::size_t k, std::size_t i) const { return lower[k * mines + i]; }
-  double hi(std::size_t k, std::size_t i) const { return upper[k * mines + i]; }
-  bool feasible(std::size_t k, std::size_t i) const { return lower[k * mines + i] == lower[k * mines + i]; }
+  std::size_t cells() const { return step.size(); }
+  /// Appends a cell; it must come after every cell already there.
+  void add(std::size_t k, std::size_t i, double lo, double hi) {
+    step.push_back(static_cast<std::int32_t>(k));
+    mine.push_back(static_cast<std::int32_t>(i));
+    lower.push_back(lo);
+    upper.push_back(hi);
+  }
+  /// Appends the cells of `later`, all of whose steps come after this one's.
+  void append(const Waterfall& later);
+  /// The index of the first cell at step k or later (binary search).
+  std::size_t first_cell_at(std::size_t k) const;
+  /// The cell (k, i), or none when mine i cannot appear at step k (binary search).
+  std::optional<std::size_t> cell(std::size_t k, std::size_t i) const;
+  bool feasible(std::size_t k, std::size_t i) const { return cell(k, i).has_value(); }
+  /// Bounds of the cell (k, i); NaN when it is not feasible.
+  double lo(std::size_t k, std::size_t i) const;
+  double hi(std::size_t k, std::size_t i) const;
 };
 
 /// A waterfall computed earlier on the same navigation (a warm rerun's previous result):

@@ -2,7 +2,11 @@
 // domains as numpy views, and result files (read with their digests checked, or as
 // a warm start; written exactly as `gesmi solve` writes them).
 
+#include <algorithm>
+#include <limits>
+
 #include <pybind11/functional.h>
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include "io/format_error.h"
@@ -78,6 +82,17 @@ py::array_t<double> mine_boxes(const TubeDomains& d) {
   return out;
 }
 
+// One bound of the waterfall as a dense (N, K) array, NaN where the mine cannot appear
+// (a copy: the solution keeps the feasible cells only).
+py::array_t<double> dense_waterfall(const Waterfall& w, const std::vector<double>& bound) {
+  py::array_t<double> out({static_cast<py::ssize_t>(w.steps), static_cast<py::ssize_t>(w.mines)});
+  double* a = out.mutable_data();
+  std::fill(a, a + w.steps * w.mines, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t c = 0; c < w.cells(); ++c)
+    a[static_cast<std::size_t>(w.step[c]) * w.mines + static_cast<std::size_t>(w.mine[c])] = bound[c];
+  return out;
+}
+
 io::SolveResult as_result(const MissionSolution& s, const Mission& mission) {
   io::SolveResult r;
   r.solution = s;
@@ -100,15 +115,11 @@ void bind_solve(py::module_& m) {
       .def_property_readonly("mines", [](const MissionSolution& s) { return mine_boxes(s.domains); },
                              "mine boxes, (K, 3, 2): north, east, down x [lower, upper]")
       .def_property_readonly("waterfall_lower",
-                             [](py::object self) {
-                               MissionSolution& s = self.cast<MissionSolution&>();
-                               return view(s.waterfall.lower, self, std::max<std::size_t>(s.waterfall.mines, 1));
-                             })
+                             [](const MissionSolution& s) { return dense_waterfall(s.waterfall, s.waterfall.lower); },
+                             "lower slant range (m) at which each mine can appear, (N, K), NaN where it cannot (a copy)")
       .def_property_readonly("waterfall_upper",
-                             [](py::object self) {
-                               MissionSolution& s = self.cast<MissionSolution&>();
-                               return view(s.waterfall.upper, self, std::max<std::size_t>(s.waterfall.mines, 1));
-                             })
+                             [](const MissionSolution& s) { return dense_waterfall(s.waterfall, s.waterfall.upper); },
+                             "upper slant range (m), (N, K), NaN where the mine cannot appear (a copy)")
       .def_property_readonly("candidates",
                              [](const MissionSolution& s) {
                                std::vector<std::vector<int>> out;

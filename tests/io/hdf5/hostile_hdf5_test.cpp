@@ -198,6 +198,8 @@ TEST(HostileHdf5, ResultsOfEarlierVersionsAreReadButCheckedValueByValue) {
   // The dense waterfall of then and the cells of now read back alike, NaN cells included.
   const Waterfall& now = read_result(samples().result).solution.waterfall;
   ASSERT_EQ(old.solution.waterfall.lower.size(), now.lower.size());
+  EXPECT_EQ(old.solution.waterfall.step, now.step);
+  EXPECT_EQ(old.solution.waterfall.mine, now.mine);
   EXPECT_EQ(std::memcmp(old.solution.waterfall.lower.data(), now.lower.data(), now.lower.size() * sizeof(double)), 0);
   EXPECT_EQ(std::memcmp(old.solution.waterfall.upper.data(), now.upper.data(), now.upper.size() * sizeof(double)), 0);
   const Case cases[] = {
