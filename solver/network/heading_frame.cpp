@@ -61,17 +61,14 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
   const SensorBoxes boxes(mission, model, none);
   const std::size_t n = mission.size();
   SensorPriors priors;
-  TubeDomains& d = priors.domains;
-  d.px.assign(n, Interval::entire());
-  d.py.assign(n, Interval::entire());
-  d.pz.resize(n);
+  priors.depth.resize(n);
   const std::size_t steps = n > 0 ? n - 1 : 0;
-  d.dx.resize(steps);
-  d.dy.resize(steps);
-  d.dz.resize(steps);
+  priors.dx.resize(steps);
+  priors.dy.resize(steps);
+  priors.dz.resize(steps);
   priors.turn_north.resize(steps);
   priors.turn_east.resize(steps);
-  for (std::size_t k = 0; k < n; ++k) d.pz[k] = boxes.depth(k);
+  for (std::size_t k = 0; k < n; ++k) priors.depth[k] = boxes.depth(k);
   if (n == 0) return priors;
   // Steps in chunks, one per core; each chunk keeps its own apart hulls, joined in step
   // order afterwards.
@@ -82,9 +79,9 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
     const auto scalar_step = [&](std::size_t k) {
       SensorBoxes::StepTurn turn;
       const Vec3I inc = boxes.step_increment(boxes.sample(k), boxes.sample(k + 1), k, &turn);
-      d.dx[k] = inc[0];
-      d.dy[k] = inc[1];
-      d.dz[k] = inc[2];
+      priors.dx[k] = inc[0];
+      priors.dy[k] = inc[1];
+      priors.dz[k] = inc[2];
       priors.turn_north[k] = float_up(turn.north);
       priors.turn_east[k] = float_up(turn.east);
       if (turn.apart_hull) apart[chunk].emplace_back(k, *turn.apart_hull);
@@ -94,7 +91,7 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
       return;
     }
     // The kernel takes nearly every step; SensorBoxes the few it leaves (sensor_kernel.h).
-    const StepIncrementArrays out{d.dx.data(), d.dy.data(), d.dz.data(), priors.turn_north.data(),
+    const StepIncrementArrays out{priors.dx.data(), priors.dy.data(), priors.dz.data(), priors.turn_north.data(),
                                   priors.turn_east.data()};
     for (const std::size_t k : kernel_step_increments(mission, model, first, last, out)) scalar_step(k);
   });
@@ -102,31 +99,61 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
   return priors;
 }
 
-TubeDomains sensor_domains_in(const SensorPriors& priors, const HeadingFrame& frame) {
-  TubeDomains d = priors.domains;
+namespace {
+
+// Calls use(k, dx, dy, dz) with each step's increments under `frame`.
+template <class Use>
+void framed_increments(const SensorPriors& priors, const HeadingFrame& frame, Use use) {
   // A step turns by the larger margin of its two samples; its north and east
   // increments then widen by these amounts.
-  const auto margin = [&](std::size_t k) { return std::max(frame.at(k), frame.at(k + 1)); };
-  const auto turn_of = [&](std::size_t k, double m) {
-    return std::pair{turn_widening(m, priors.turn_east[k], priors.turn_north[k]),
-                     turn_widening(m, priors.turn_north[k], priors.turn_east[k])};
-  };
-  for (std::size_t k = 0; k < d.dx.size(); ++k) {
-    const double m = margin(k);
-    if (m == 0.0) continue;
-    const auto [north, east] = turn_of(k, m);
-    d.dx[k] = d.dx[k].inflated(north);
-    d.dy[k] = d.dy[k].inflated(east);
+  auto apart = priors.apart_hulls.begin();
+  for (std::size_t k = 0; k < priors.dx.size(); ++k) {
+    const double m = std::max(frame.at(k), frame.at(k + 1));
+    Interval dx = priors.dx[k], dy = priors.dy[k], dz = priors.dz[k];
+    double north = 0.0, east = 0.0;
+    if (m != 0.0) {
+      north = turn_widening(m, priors.turn_east[k], priors.turn_north[k]);
+      east = turn_widening(m, priors.turn_north[k], priors.turn_east[k]);
+      dx = dx.inflated(north);
+      dy = dy.inflated(east);
+    }
+    if (apart != priors.apart_hulls.end() && apart->first == k) {
+      // Both boxes widen alike (the trapezoid above); where they still do not meet, the
+      // step is empty and the solver reports it.
+      const Vec3I& hull = apart->second;
+      dx = intersect(dx, m != 0.0 ? hull[0].inflated(north) : hull[0]);
+      dy = intersect(dy, m != 0.0 ? hull[1].inflated(east) : hull[1]);
+      dz = intersect(dz, hull[2]);
+      ++apart;
+    }
+    use(k, dx, dy, dz);
   }
-  for (const auto& [k, hull] : priors.apart_hulls) {
-    // Both boxes widen alike (the trapezoid above); where they still do not meet, the
-    // step is empty and the solver reports it.
-    const auto [north, east] = turn_of(k, margin(k));
-    d.dx[k] = intersect(d.dx[k], hull[0].inflated(north));
-    d.dy[k] = intersect(d.dy[k], hull[1].inflated(east));
-    d.dz[k] = intersect(d.dz[k], hull[2]);
-  }
+}
+
+}  // namespace
+
+TubeDomains sensor_domains_in(const SensorPriors& priors, const HeadingFrame& frame) {
+  TubeDomains d;
+  d.px.assign(priors.depth.size(), Interval::entire());
+  d.py.assign(priors.depth.size(), Interval::entire());
+  d.pz = priors.depth;
+  d.dx.resize(priors.dx.size());
+  d.dy.resize(priors.dx.size());
+  d.dz.resize(priors.dx.size());
+  framed_increments(priors, frame, [&](std::size_t k, const Interval& dx, const Interval& dy, const Interval& dz) {
+    d.dx[k] = dx;
+    d.dy[k] = dy;
+    d.dz[k] = dz;
+  });
   return d;
+}
+
+void narrow_to_frame(TubeDomains& d, const SensorPriors& priors, const HeadingFrame& frame) {
+  framed_increments(priors, frame, [&](std::size_t k, const Interval& dx, const Interval& dy, const Interval& dz) {
+    d.dx[k] = intersect(d.dx[k], dx);
+    d.dy[k] = intersect(d.dy[k], dy);
+    d.dz[k] = intersect(d.dz[k], dz);
+  });
 }
 
 std::vector<double> heading_margins_over(const Mission& mission, const TubeDomains& tube) {

@@ -40,7 +40,8 @@ inline HeadingFrame zone_frame(const Mission& mission) { return HeadingFrame{mis
 /// rounded up: a turn by at most m widens the step's north increment by
 /// m turn_east + m²/2 turn_north (and the east one symmetrically).
 struct SensorPriors {
-  TubeDomains domains;  // increments and depth; positions unbounded; no mines
+  std::vector<Interval> depth;       // the depth boxes (pz), which no frame changes
+  std::vector<Interval> dx, dy, dz;  // the increments without frame margin
   std::vector<float> turn_north, turn_east;
   /// Steps whose trapezoid and rate hull did not meet (SensorBoxes::StepTurn): the
   /// hull, which the turned increment is intersected with. In step order; rare.
@@ -50,8 +51,11 @@ struct SensorPriors {
 SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& model);
 
 /// The sensor domains under `frame`: each step's increments widened by the turn of the
-/// larger margin of its two samples.
+/// larger margin of its two samples; positions unbounded but for depth; no mines.
 TubeDomains sensor_domains_in(const SensorPriors& priors, const HeadingFrame& frame);
+/// In place: d's increments intersected with those of sensor_domains_in(priors, frame),
+/// for domains that already enclose the solution under a looser frame (no copy).
+void narrow_to_frame(TubeDomains& d, const SensorPriors& priors, const HeadingFrame& frame);
 
 /// Per-sample margins over a tube that contains the truth: the convergence within the
 /// farthest point from the origin the robot can reach while in the boxes of the

@@ -99,6 +99,13 @@ void add_network_priors(TubeDomains& d, const MissionNetwork& network) {
   for (const Detection& det : network.detections) d.candidates.push_back(det.allowed);
 }
 
+void intersect_network_priors(TubeDomains& d, const MissionNetwork& network) {
+  for (const Anchor& a : network.anchors)
+    if (a.at.on_grid) a.at.narrow(d, a.fix.box);
+  for (std::size_t j = 0; j < network.detections.size() && j < d.candidates.size(); ++j)
+    d.candidates[j] &= network.detections[j].allowed;
+}
+
 TubeDomains initial_domains(const Mission& mission, const SensorModel& model, const MissionNetwork& network) {
   TubeDomains d = sensor_domains(mission, model);
   add_network_priors(d, network);

@@ -61,5 +61,8 @@ TubeDomains initial_domains(const Mission& mission, const SensorModel& model, co
 /// (fixes on sample times, unbounded mines, candidate mines).
 TubeDomains sensor_domains(const Mission& mission, const SensorModel& model);
 void add_network_priors(TubeDomains& domains, const MissionNetwork& network);
+/// The same priors intersected into domains that already enclose the solution (the
+/// mines are left as they are, the candidates narrowed): no copy of the domains.
+void intersect_network_priors(TubeDomains& domains, const MissionNetwork& network);
 
 }  // namespace gesmi

@@ -96,11 +96,13 @@ void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOption
   s.timings_ms["propagate"] = elapsed_ms(start);
   if (narrow_frame(mission, in, s.domains, s.report.consistent, margins, frame, s)) {
     const int first_sweeps = s.report.sweeps;
-    pass = build_pass(mission, in, priors, frame, s);
-    TubeDomains narrowed = std::move(pass.sensor);
-    add_network_priors(narrowed, pass.net);
-    intersect_with(narrowed, s.domains);  // the first pass's enclosure holds under a looser model
-    s.domains = std::move(narrowed);
+    // The first pass's enclosure holds under its looser frame: narrowed in place (no
+    // copy of the domains) by the sensor domains and network priors under this one.
+    start = Clock::now();
+    pass.net = build_network(mission, mission.model, in.fixes, frame);
+    narrow_to_frame(s.domains, priors, frame);
+    intersect_network_priors(s.domains, pass.net);
+    s.timings_ms["build"] += elapsed_ms(start);
     start = Clock::now();
     take_propagation(s.report, solve(pass.net, s.domains, options.propagation));
     s.timings_ms["propagate"] += elapsed_ms(start);

@@ -72,8 +72,8 @@ Comparison compare_with_scalar(const Mission& m) {
   for (std::size_t k = 0; k + 1 < m.size(); ++k) {
     SensorBoxes::StepTurn turn;
     const Vec3I inc = boxes.step_increment(boxes.sample(k), boxes.sample(k + 1), k, &turn);
-    c.differing += !same_to_rounding(priors.domains.dx[k], inc[0]) + !same_to_rounding(priors.domains.dy[k], inc[1]) +
-                   !same_to_rounding(priors.domains.dz[k], inc[2]);
+    c.differing += !same_to_rounding(priors.dx[k], inc[0]) + !same_to_rounding(priors.dy[k], inc[1]) +
+                   !same_to_rounding(priors.dz[k], inc[2]);
     // The float sensitivities: at most one float step apart, and never below the scalar.
     const auto near_float = [](float kernel, double scalar) {
       return kernel >= scalar && kernel <= std::nextafter(static_cast<float>(scalar), 1e30f) * (1.0f + 1e-6f);
