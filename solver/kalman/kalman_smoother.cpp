@@ -35,9 +35,12 @@ void build_and_solve(const Mission& m, const SensorModel& model, std::span<const
   chain.reset();
   const double f = o.noise_factor;
   // Odometry: p(k+1) - p(k) = dt (R_k v_k + R_{k+1} v_{k+1}) / 2, DVL noise per axis.
+  // Each sample's rotation is computed once: the next step's r0 is this step's r1.
+  Mat3d r1 = n > 0 ? rotation(m, 0) : Mat3d::Identity();
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const double dt = m.time[k + 1] - m.time[k];
-    const Mat3d r0 = rotation(m, k), r1 = rotation(m, k + 1);
+    const Mat3d r0 = r1;
+    r1 = rotation(m, k + 1);
     const Vec3d v0(m.vx[k], m.vy[k], m.vz[k]), v1(m.vx[k + 1], m.vy[k + 1], m.vz[k + 1]);
     const Vec3d delta = 0.5 * dt * (r0 * v0 + r1 * v1);
     Vec3d var_body;
