@@ -79,7 +79,8 @@ double Waterfall::hi(std::size_t k, std::size_t i) const {
 }
 
 Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains,
-                            const WaterfallBefore* before, std::optional<double> max_speed) {
+                            const WaterfallBefore* before, std::optional<double> max_speed,
+                            const std::function<void(double)>& on_progress) {
   // The tube holds the truth, so the frame's margins over it hold too.
   const std::vector<double> margins = max_speed ? heading_margins_over(mission, domains, *max_speed)
                                                 : heading_margins_over(mission, domains);
@@ -105,6 +106,8 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
     std::vector<Interval> row(mines);
     std::size_t earlier = any_kept ? before->waterfall.first_cell_at(first) : 0;
     for (std::size_t k = first; k < last; ++k) {
+      // The first chunk runs on the calling thread: it reports for all (they keep pace).
+      if (chunk == 0 && on_progress && (k - first) % 8192 == 0) on_progress(static_cast<double>(k - first) / static_cast<double>(last - first));
       const Vec3I p = domains.position(k);
       const bool kept_step = any_kept && same_positions(domains, before->domains, k);
       std::fill(row.begin(), row.end(), Interval::empty());

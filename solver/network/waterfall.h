@@ -7,6 +7,7 @@
 // mine cannot appear.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -53,7 +54,9 @@ struct WaterfallBefore {
 };
 
 /// `max_speed`: speed_bound(mission) (heading_frame.h) when the caller has it.
+/// `on_progress` receives the fraction done, from the calling thread.
 Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains,
-                            const WaterfallBefore* before = nullptr, std::optional<double> max_speed = std::nullopt);
+                            const WaterfallBefore* before = nullptr, std::optional<double> max_speed = std::nullopt,
+                            const std::function<void(double)>& on_progress = {});
 
 }  // namespace gesmi

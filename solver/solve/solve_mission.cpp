@@ -225,6 +225,10 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
   s.mark_outlier.assign(mission.mark_count(), 0);
   s.gps_outlier.assign(mission.gps_time.size(), 0);
 
+  const auto stage = [&](const char* name, double fraction) {
+    if (options.on_stage) options.on_stage(name, fraction);
+  };
+  stage("sensor enclosures", -1.0);
   auto start = Clock::now();
   SolveInputs in{gps_fixes(mission), mission.heading_frame_margin > 0.0 ? speed_bound(mission) : 0.0};
   MissionNetwork net;
@@ -245,7 +249,9 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
     // A warm rerun's earlier waterfall is copied where nothing it depends on changed.
     const MissionSolution* previous = s.report.mode == SolveMode::warm ? options.warm_from : nullptr;
     const WaterfallBefore before{previous ? previous->domains : s.domains, previous ? previous->waterfall : s.waterfall};
-    s.waterfall = compute_waterfall(mission, mission.model, s.domains, previous ? &before : nullptr, in.max_speed);
+    stage("waterfall", 0.0);
+    s.waterfall = compute_waterfall(mission, mission.model, s.domains, previous ? &before : nullptr, in.max_speed,
+                                    [&](double fraction) { stage("waterfall", fraction); });
     s.timings_ms["waterfall"] = elapsed_ms(start);
   }
   return s;

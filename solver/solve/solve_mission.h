@@ -14,6 +14,7 @@
 // models). Results are never wrong: an inapplicable warm start is solved cold, and
 // says why.
 
+#include <functional>
 #include <string>
 
 #include "solver/mission/mission.h"
@@ -33,6 +34,10 @@ struct SolveOptions {
   const MissionSolution* warm_from = nullptr;
   bool diagnose = true;   // cold inconsistent solves: find the single inputs to blame
   bool waterfall = true;  // compute the reconstructed waterfall
+  /// Progress hook, called on the calling thread: the stage being computed ("sensor
+  /// enclosures", "waterfall") and the fraction of it done (< 0 when unknown). The
+  /// sweeps in between are reported by propagation.on_sweep.
+  std::function<void(const char* stage, double fraction)> on_stage;
   /// Empty when usable; otherwise the reason.
   std::string validate() const;
 };

@@ -11,6 +11,7 @@
 #include "io/files/sensor_model_yaml.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/progress.h"
 #include "tools/gesmi/json_writer.h"
 
 namespace gesmi::cli {
@@ -46,11 +47,14 @@ int run_kalman(std::span<const std::string> args) {
   outputs.check(output);
 
   io::KalmanFile file;
+  Progress progress("gesmi kalman:");  // on a terminal, for long runs only (progress.h)
+  progress.update(-1.0, "reading " + v["mission"].as<std::string>());
   auto start = Clock::now();
   Mission mission = io::read_mission(v["mission"].as<std::string>());
   if (v.count("config")) io::merge_sensor_model_yaml(v["config"].as<std::string>(), mission.model);
   file.timings_ms["load"] = elapsed_ms(start);
   start = Clock::now();
+  progress.update(-1.0, "smoothing (" + std::to_string(o.iterations) + " linearisations)");
   file.result = kalman_smooth(mission, mission.model, gps_fixes(mission), o);
   file.timings_ms["smooth"] = elapsed_ms(start);
   const Containment c = three_sigma_containment(file.result, mission);
@@ -59,9 +63,11 @@ int run_kalman(std::span<const std::string> args) {
   file.time = mission.time;
   file.options = o;
   start = Clock::now();
+  progress.update(-1.0, "writing " + output);
   io::write_kalman_result(file, output);
   outputs.commit();
   file.timings_ms["write"] = elapsed_ms(start);
+  progress.finish();
   if (v.count("stats")) {
     std::string json = "{\"steps\": " + std::to_string(mission.size()) + ", \"mines\": " + std::to_string(mission.mine_count) +
                        ", \"containment_3sigma_trajectory\": " + json_number(c.trajectory) +

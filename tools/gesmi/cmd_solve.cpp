@@ -42,6 +42,9 @@ int run_solve(std::span<const std::string> args) {
   }
 
   std::map<std::string, double> timings;
+  // One progress line over the whole command, on a terminal only (progress.h).
+  Progress progress("gesmi solve:");
+  progress.update(-1.0, "reading " + mission_path);
   auto start = Clock::now();
   Mission mission = io::read_mission(mission_path, io::TruthReading::skip);  // solve never looks at it
   if (v.count("config")) io::merge_sensor_model_yaml(v["config"].as<std::string>(), mission.model);
@@ -50,19 +53,20 @@ int run_solve(std::span<const std::string> args) {
   const std::string navigation = io::navigation_digest(mission);
   MissionSolution previous;
   if (v.count("from")) {
+    progress.update(-1.0, "reading " + v["from"].as<std::string>());
     previous = io::read_warm_start(v["from"].as<std::string>(), mission, navigation);
     options.warm_from = &previous;
   }
   timings["load"] = elapsed_ms(start);
 
-  Progress progress("solving");
   options.propagation.on_sweep = [&](int sweep, double move) {
     progress.update(static_cast<double>(sweep) / options.propagation.max_sweeps,
                     "sweep " + std::to_string(sweep) + ", largest move " + std::to_string(move) + " m");
   };
+  options.on_stage = [&](const char* stage, double fraction) { progress.update(fraction, stage); };
   io::SolveResult result;
   result.solution = solve_mission(mission, options);
-  progress.finish();
+  progress.update(-1.0, "writing " + output);
   const MissionSolution& s = result.solution;
   timings.insert(s.timings_ms.begin(), s.timings_ms.end());
 
@@ -76,6 +80,7 @@ int run_solve(std::span<const std::string> args) {
       result, mission, output, std::filesystem::path(mission_path).filename().string(), parse_solve_siblings(v));
   outputs.commit();
   timings["write"] = elapsed_ms(start);
+  progress.finish();
 
   print_solve_notes(s);
   if (v.count("stats"))

@@ -14,6 +14,7 @@ Progress::~Progress() { finish(); }
 void Progress::update(double fraction, const std::string& status) {
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
+  if (now - started_ < std::chrono::milliseconds(300)) return;
   if (drawn_ && now - last_ < std::chrono::milliseconds(50) && fraction < 1.0) return;
   last_ = now;
   constexpr int kWidth = 30;

@@ -1,6 +1,7 @@
 #pragma once
 // A one-line progress display on stderr, shown only when stderr is a terminal
-// (quiet in pipes, logs and tests). Redrawn at most every 50 ms.
+// (quiet in pipes, logs and tests) and only once the command has run for 0.3 s (a
+// quick command draws nothing). Redrawn at most every 50 ms.
 
 #include <chrono>
 #include <string>
@@ -24,6 +25,7 @@ class Progress {
   std::string label_;
   bool enabled_;
   bool drawn_ = false;
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
   std::chrono::steady_clock::time_point last_{};
 };
 

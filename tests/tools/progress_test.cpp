@@ -1,0 +1,61 @@
+// The progress line of long commands (tools/gesmi/progress.h): drawn on a terminal over
+// the whole command (reading, the solve's stages, writing) and cleared at the end;
+// nothing on a pipe, nothing for a command that ends quickly. The terminal is a
+// pseudo-terminal from util-linux's `script`, which Debian always installs.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+
+#include "tests/support/paths.h"
+#include "tests/support/run_command.h"
+
+namespace gesmi::test {
+namespace {
+
+// What a command prints to a terminal (stdout and stderr together), and its exit code.
+std::pair<int, std::string> on_terminal(const std::string& command) {
+  const std::string line = "script -qec '" + command + "' /dev/null </dev/null 2>&1";
+  std::FILE* pipe = ::popen(line.c_str(), "r");
+  if (!pipe) return {-1, ""};
+  std::string out;
+  std::array<char, 4096> buffer;
+  for (std::size_t got; (got = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;) out.append(buffer.data(), got);
+  const int status = ::pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+TEST(Progress, ALongSolveShowsItsStagesOnATerminalAndClearsTheLine) {
+  const std::string dir = temp_folder("progress");
+  const std::string gesmi = std::string(GESMI_BIN_DIR) + "/gesmi";
+  // 3 x 10^5 steps: a solve of a second or more, longer than the line's 0.3 s delay.
+  ASSERT_EQ(run_gesmi({"simulate", "--seed", "3", "--duration", "30000", "-o", dir + "/m.h5"}).exit_code, 0);
+  const auto [code, out] = on_terminal(gesmi + " solve " + dir + "/m.h5 -o " + dir + "/r.h5");
+  ASSERT_EQ(code, 0) << out;
+  EXPECT_NE(out.find("\r\033[Kgesmi solve: "), std::string::npos) << out;
+  EXPECT_NE(out.find("waterfall"), std::string::npos) << out;
+  // Cleared before the summary: the last progress text is followed by an erase.
+  const std::size_t last = out.rfind("gesmi solve: ");
+  ASSERT_NE(last, std::string::npos);
+  EXPECT_NE(out.find("\r\033[K", last), std::string::npos) << out.substr(last);
+  EXPECT_NE(out.find("written to"), std::string::npos) << out;
+
+  // The same command on a pipe: no progress at all.
+  const CommandResult piped = run_gesmi({"solve", dir + "/m.h5", "-o", dir + "/r2.h5"});
+  ASSERT_EQ(piped.exit_code, 0) << piped.err;
+  EXPECT_EQ(piped.err.find('\r'), std::string::npos);
+  EXPECT_EQ(piped.out.find('\r'), std::string::npos);
+}
+
+TEST(Progress, AQuickCommandDrawsNothingOnATerminal) {
+  const std::string dir = temp_folder("progress-quick");
+  ASSERT_EQ(run_gesmi({"simulate", "--seed", "3", "--duration", "60", "-o", dir + "/m.h5"}).exit_code, 0);
+  const auto [code, out] = on_terminal(std::string(GESMI_BIN_DIR) + "/gesmi solve " + dir + "/m.h5 -o " + dir + "/r.h5");
+  ASSERT_EQ(code, 0) << out;
+  EXPECT_EQ(out.find("gesmi solve: "), std::string::npos) << out;
+}
+
+}  // namespace
+}  // namespace gesmi::test
