@@ -109,7 +109,7 @@ void framed_increments(const SensorPriors& priors, const HeadingFrame& frame, Us
   auto apart = priors.apart_hulls.begin();
   for (std::size_t k = 0; k < priors.dx.size(); ++k) {
     const double m = std::max(frame.at(k), frame.at(k + 1));
-    Interval dx = priors.dx[k], dy = priors.dy[k], dz = priors.dz[k];
+    Interval dx = priors.dx[k], dy = priors.dy[k], dz = priors.dz.empty() ? Interval::entire() : priors.dz[k];
     double north = 0.0, east = 0.0;
     if (m != 0.0) {
       north = turn_widening(m, priors.turn_east[k], priors.turn_north[k]);
@@ -144,6 +144,25 @@ TubeDomains sensor_domains_in(const SensorPriors& priors, const HeadingFrame& fr
     d.dx[k] = dx;
     d.dy[k] = dy;
     d.dz[k] = dz;
+  });
+  return d;
+}
+
+TubeDomains take_sensor_domains(SensorPriors& priors, const HeadingFrame& frame) {
+  TubeDomains d;
+  d.px.assign(priors.depth.size(), Interval::entire());
+  d.py.assign(priors.depth.size(), Interval::entire());
+  d.pz = std::move(priors.depth);
+  d.dz = std::move(priors.dz);
+  priors.depth = {};
+  priors.dz = {};
+  d.dx.resize(priors.dx.size());
+  d.dy.resize(priors.dx.size());
+  // With dz moved out, the framed dz is the apart hull's (or the whole line): intersected.
+  framed_increments(priors, frame, [&](std::size_t k, const Interval& dx, const Interval& dy, const Interval& dz) {
+    d.dx[k] = dx;
+    d.dy[k] = dy;
+    d.dz[k] = intersect(d.dz[k], dz);
   });
   return d;
 }

@@ -42,6 +42,7 @@ inline HeadingFrame zone_frame(const Mission& mission) { return HeadingFrame{mis
 struct SensorPriors {
   std::vector<Interval> depth;       // the depth boxes (pz), which no frame changes
   std::vector<Interval> dx, dy, dz;  // the increments without frame margin
+
   std::vector<float> turn_north, turn_east;
   /// Steps whose trapezoid and rate hull did not meet (SensorBoxes::StepTurn): the
   /// hull, which the turned increment is intersected with. In step order; rare.
@@ -53,8 +54,14 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
 /// The sensor domains under `frame`: each step's increments widened by the turn of the
 /// larger margin of its two samples; positions unbounded but for depth; no mines.
 TubeDomains sensor_domains_in(const SensorPriors& priors, const HeadingFrame& frame);
+/// The same, moving the depth boxes and vertical increments out of `priors` (no frame
+/// changes them) instead of copying them: what a solve does with its first pass, so
+/// that the largest memory of the solve holds one copy. The priors keep dx, dy and the
+/// turns; narrow_to_frame() then leaves dz as it is.
+TubeDomains take_sensor_domains(SensorPriors& priors, const HeadingFrame& frame);
 /// In place: d's increments intersected with those of sensor_domains_in(priors, frame),
-/// for domains that already enclose the solution under a looser frame (no copy).
+/// for domains that already enclose the solution under a looser frame (no copy); dz
+/// too unless the priors released it.
 void narrow_to_frame(TubeDomains& d, const SensorPriors& priors, const HeadingFrame& frame);
 
 /// Per-sample margins over a tube that contains the truth: the convergence within the

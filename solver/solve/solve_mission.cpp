@@ -85,32 +85,35 @@ bool narrow_frame(const Mission& mission, const SolveInputs& in, const TubeDomai
 
 void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOptions& options, MissionSolution& s,
                 MissionNetwork& net) {
-  const SensorPriors priors = build_priors(mission, s);
+  SensorPriors priors = build_priors(mission, s);
   HeadingFrame frame = zone_frame(mission);
   std::vector<double> margins;
-  Pass pass = build_pass(mission, in, priors, frame, s);
-  s.domains = std::move(pass.sensor);
-  add_network_priors(s.domains, pass.net);
   auto start = Clock::now();
-  take_propagation(s.report, solve(pass.net, s.domains, options.propagation));
+  // The depth boxes and vertical increments move from the priors into the domains.
+  net = build_network(mission, mission.model, in.fixes, frame);
+  s.domains = take_sensor_domains(priors, frame);
+  add_network_priors(s.domains, net);
+  s.timings_ms["build"] += elapsed_ms(start);
+  start = Clock::now();
+  take_propagation(s.report, solve(net, s.domains, options.propagation));
   s.timings_ms["propagate"] = elapsed_ms(start);
   if (narrow_frame(mission, in, s.domains, s.report.consistent, margins, frame, s)) {
     const int first_sweeps = s.report.sweeps;
     // The first pass's enclosure holds under its looser frame: narrowed in place (no
     // copy of the domains) by the sensor domains and network priors under this one.
     start = Clock::now();
-    pass.net = build_network(mission, mission.model, in.fixes, frame);
+    net = build_network(mission, mission.model, in.fixes, frame);
     narrow_to_frame(s.domains, priors, frame);
-    intersect_network_priors(s.domains, pass.net);
+    intersect_network_priors(s.domains, net);
     s.timings_ms["build"] += elapsed_ms(start);
     start = Clock::now();
-    take_propagation(s.report, solve(pass.net, s.domains, options.propagation));
+    take_propagation(s.report, solve(net, s.domains, options.propagation));
     s.timings_ms["propagate"] += elapsed_ms(start);
     s.report.sweeps += first_sweeps;
   }
-  net = std::move(pass.net);
   if (s.report.consistent || !options.diagnose) return;
   start = Clock::now();
+  if (priors.dz.empty()) priors = frameless_sensor_priors(mission, mission.model);  // moved into the first pass
   s.report.explained_by = diagnose(net, sensor_domains_in(priors, frame), options.propagation);
   s.timings_ms["diagnose"] = elapsed_ms(start);
 }
