@@ -7,15 +7,15 @@ namespace gesmi {
 
 ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, double prior_info)
     : n_(n), q_(q), prior_info_(prior_info), diag_(n, Mat3::Zero()), eta_(n, Vec3::Zero()),
-      step_info_(n > 0 ? n - 1 : 0, Mat3::Zero()), mixed_(n),
+      step_info_(n > 0 ? n - 1 : 0, Mat3::Zero()),
       d_(MatX::Identity(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)) * prior_info),
       eta_m_(VecX::Zero(static_cast<Eigen::Index>(q))) {}
 
 void ArrowheadChain::reset() {
   for (Mat3& x : diag_) x.setZero();
   for (Vec3& x : eta_) x.setZero();
-  for (Mat3& x : step_info_) x.setZero();
-  for (MatX& x : mixed_) x.resize(0, 0);  // a few event steps hold one
+  step_info_.assign(n_ > 0 ? n_ - 1 : 0, Mat3::Zero());  // (released after a last solve)
+  mixed_.clear();
   const auto q = static_cast<Eigen::Index>(q_);
   d_ = MatX::Identity(q, q) * prior_info_;
   eta_m_.setZero();
@@ -38,7 +38,7 @@ void ArrowheadChain::add_step(std::size_t k, const Mat3& w, const Vec3& delta) {
 void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVectorXd& hm, double z, double w) {
   diag_[k] += w * hp.transpose() * hp;
   eta_[k] += w * z * hp.transpose();
-  MatX& b = mixed_[k];
+  MatX& b = mixed_[k];  // created empty at the first mixed factor of step k
   if (b.size() == 0) b = MatX::Zero(3, static_cast<Eigen::Index>(q_));
   b += w * hp.transpose() * hm;
   d_ += w * hm.transpose() * hm;
@@ -70,37 +70,45 @@ void ArrowheadChain::solve() {
     acc.setZero();
     acc_eta.setZero();
   };
-  const auto open_segment = [&](std::size_t k, const MatX* carried) {
-    MatX b = mixed_[k];
+  const auto open_segment = [&](const MatX& mixed, const MatX* carried) {
+    MatX b = mixed;
     if (carried) b += t * *carried;
     close_segment();
     segment_b.push_back(std::move(b));
     t.setIdentity();
   };
-  if (n_ > 0 && mixed_[0].size() != 0) open_segment(0, nullptr);
+  auto next_mixed = mixed_.begin();  // the first step with a mixed factor not yet reached
+  const auto mixed_at = [&](std::size_t k) -> const MatX* {
+    if (next_mixed == mixed_.end() || next_mixed->first != k) return nullptr;
+    return &(next_mixed++)->second;
+  };
+  if (n_ > 0)
+    if (const MatX* b0 = mixed_at(0)) open_segment(*b0, nullptr);
   for (std::size_t k = 0; k < n_; ++k) {
     Step& st = steps[k];
     st.segment = -1;  // (kept from an earlier solve otherwise)
-    st.s = a.inverse();
-    st.c = st.s * eta;
+    const Mat3 s_k = a.inverse();
+    const Vec3 c_k = s_k * eta;
+    diag_[k] = s_k;  // the information block of p_k was read at step k - 1
+    eta_[k] = c_k;
     if (!segment_b.empty()) {
       st.segment = static_cast<int>(segment_b.size()) - 1;
-      st.p = st.s * t;
+      st.p = s_k * t;
       acc.noalias() += t.transpose() * st.p;
-      acc_eta.noalias() += t.transpose() * st.c;
+      acc_eta.noalias() += t.transpose() * c_k;
     }
     if (k + 1 == n_) break;
-    const Mat3& w = step_info_[k];  // the (k, k+1) block is -W
-    st.l = -st.s * w;
-    a = diag_[k + 1] - w * st.s * w;
-    eta = eta_[k + 1] + w * st.c;
+    const Mat3 w = step_info_[k];  // the (k, k+1) block is -W
+    step_info_[k] = -s_k * w;       // L_k
+    a = diag_[k + 1] - w * s_k * w;
+    eta = eta_[k + 1] + w * c_k;
     if (!segment_b.empty()) t = w * st.p;
-    if (mixed_[k + 1].size() != 0) {
+    if (const MatX* b = mixed_at(k + 1)) {
       if (segment_b.empty()) {
-        open_segment(k + 1, nullptr);
+        open_segment(*b, nullptr);
       } else {
         const MatX carried = segment_b.back();
-        open_segment(k + 1, &carried);
+        open_segment(*b, &carried);
       }
     }
   }
@@ -118,8 +126,6 @@ void ArrowheadChain::solve() {
     b_sigma.push_back(b * m_cov_);
     b_sigma_b.push_back(b_sigma.back() * b.transpose());
   }
-  means_.assign(n_, Vec3::Zero());
-  covariances_.assign(n_, Mat3::Zero());
   // Backward: p_k = c_k - L_k p_{k+1} - P_k B_e m. Within a segment the cross covariance
   // X_{k} = Cov(p_k, m) is alpha_k Z + beta_k B_e Sigma_mm, with Z = X at the step after
   // the segment; only Y_k = X_{k+1} B_e^T (3x3) is needed per step.
@@ -137,11 +143,13 @@ void ArrowheadChain::solve() {
       current = st.segment;
       if (current >= 0) y_end = z * segment_b[static_cast<std::size_t>(current)].transpose();
     }
-    Vec3 p = st.c;
-    Mat3 cov = st.s;
+    // eta_[k + 1] and diag_[k + 1] hold the mean and covariance of p_{k+1} by now.
+    Vec3 p = eta_[k];
+    Mat3 cov = diag_[k];
+    const Mat3 l = k + 1 < n_ ? step_info_[k] : Mat3::Zero();
     if (k + 1 < n_) {
-      p -= st.l * means_[k + 1];
-      cov += st.l * covariances_[k + 1] * st.l.transpose();
+      p -= l * eta_[k + 1];
+      cov += l * diag_[k + 1] * l.transpose();
     }
     if (current >= 0) {
       const auto e = static_cast<std::size_t>(current);
@@ -149,18 +157,18 @@ void ArrowheadChain::solve() {
       cov += st.p * b_sigma_b[e] * st.p.transpose();
       if (k + 1 < n_) {
         const Mat3 y = alpha * y_end + beta * b_sigma_b[e];  // X_{k+1} B_e^T
-        const Mat3 cross = st.l * y * st.p.transpose();
+        const Mat3 cross = l * y * st.p.transpose();
         cov += cross + cross.transpose();
       }
       // X_k = -L_k X_{k+1} - P_k B_e Sigma_mm.
-      alpha = (-st.l * alpha).eval();
-      beta = (-st.l * beta - st.p).eval();
+      alpha = (-l * alpha).eval();
+      beta = (-l * beta - st.p).eval();
     } else if (k + 1 < n_) {
-      alpha = (-st.l * alpha).eval();  // before the first event: X_k = -L_k X_{k+1}
-      beta = (-st.l * beta).eval();
+      alpha = (-l * alpha).eval();  // before the first event: X_k = -L_k X_{k+1}
+      beta = (-l * beta).eval();
     }
-    means_[k] = p;
-    covariances_[k] = 0.5 * (cov + cov.transpose());
+    eta_[k] = p;
+    diag_[k] = 0.5 * (cov + cov.transpose());
   }
 }
 

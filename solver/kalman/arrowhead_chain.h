@@ -8,6 +8,7 @@
 // blocks along the chain: O(n q^2) time for q static unknowns, no n x n matrix.
 
 #include <Eigen/Core>
+#include <map>
 #include <vector>
 
 namespace gesmi {
@@ -27,8 +28,12 @@ class ArrowheadChain {
   /// Removes every factor, keeping the memory: a relinearised system is built again in
   /// the same buffers (at 10^7 steps, reallocating them cost more than the solve).
   void reset();
-  /// Frees what only solve() needs, once no further solve follows.
-  void release_workspace() { std::vector<Step>().swap(steps_); }
+  /// Frees what only solve() needs, once no further solve follows (the means and
+  /// covariances stay).
+  void release_workspace() {
+    std::vector<Step>().swap(steps_);
+    std::vector<Mat3>().swap(step_info_);
+  }
 
   /// Information W and mean term on p_k alone: adds W to the block and W * mean.
   void add_position(std::size_t k, const Mat3& information, const Vec3& mean);
@@ -41,32 +46,33 @@ class ArrowheadChain {
   void solve();
   /// The estimate of (p_k, m) from the factors at steps <= k only (the filter), valid
   /// during the forward pass only through filtered_at() called from a factor callback.
-  const Vec3& mean(std::size_t k) const { return means_[k]; }
-  const Mat3& covariance(std::size_t k) const { return covariances_[k]; }
+  const Vec3& mean(std::size_t k) const { return eta_[k]; }
+  const Mat3& covariance(std::size_t k) const { return diag_[k]; }
   const VecX& static_mean() const { return m_mean_; }
   const MatX& static_covariance() const { return m_cov_; }
   std::size_t size() const { return n_; }
 
  private:
-  // The forward pass's per-step conditionals: conditional covariance, -S W, S T (so
-  // that M_k = P_k B_e), the conditional mean, and the step's segment.
+  // Memory (issue: whole-process speed, 10^7 steps): solve() works in place. Its forward
+  // pass overwrites diag_[k] with the conditional covariance S_k, eta_[k] with the
+  // conditional mean c_k and step_info_[k] with -S_k W_k, each once it has been read
+  // for the last time; the backward pass overwrites eta_[k] with the mean and diag_[k]
+  // with the covariance. Only S_k T_k (so that M_k = P_k B_e) and the step's segment
+  // need room of their own.
   struct Step {
-    Mat3 s, l, p;
-    Vec3 c;
+    Mat3 p;
     int segment = -1;
   };
 
   std::size_t n_, q_;
   double prior_info_;
-  std::vector<Mat3> diag_;        // information block of p_k
-  std::vector<Vec3> eta_;         // information vector of p_k
-  std::vector<Mat3> step_info_;   // W_k between p_k and p_k+1
-  std::vector<MatX> mixed_;       // B_k (3 x q), empty when no mixed factor at k
+  std::vector<Mat3> diag_;        // information block of p_k; then S_k; then the covariance
+  std::vector<Vec3> eta_;         // information vector of p_k; then c_k; then the mean
+  std::vector<Mat3> step_info_;   // W_k between p_k and p_k+1; then L_k = -S_k W_k
+  std::map<std::size_t, MatX> mixed_;  // B_k (3 x q) at the few steps with a mixed factor
   MatX d_;                        // information of m
   VecX eta_m_;
   // Results.
-  std::vector<Vec3> means_;
-  std::vector<Mat3> covariances_;
   VecX m_mean_;
   MatX m_cov_;
   std::vector<Step> steps_;  // kept between solves
