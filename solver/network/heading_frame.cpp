@@ -184,22 +184,26 @@ std::vector<double> heading_margins_over(const Mission& mission, const TubeDomai
   const double zone = mission.heading_frame_margin;
   const std::size_t n = tube.size();
   if (zone == 0.0 || n == 0) return {};
+  // Plain doubles: every term is non-negative, so the few roundings to nearest of each
+  // distance (at most 7) are covered by a relative 8 units in the last place, and
+  // squares that underflow by the smallest normal number under the root.
+  constexpr double up = 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
   std::vector<double> reach(n);  // farthest distance from the origin within sample k's box
   for (std::size_t k = 0; k < n; ++k) {
     const double north = tube.px[k].mag(), east = tube.py[k].mag();
-    reach[k] = sqrt_up(add_up(mul_up(north, north), mul_up(east, east)));
+    reach[k] = std::sqrt(north * north + east * east + std::numeric_limits<double>::min());  // (squares that underflow)
   }
   std::vector<double> margins(n, 0.0);
   for (std::size_t k = 0; k + 1 < n; ++k) {
     // Within a step the robot is at most half the step's travel from one of its ends.
-    const double half_travel = mul_up(speed, mul_up(0.5, sub_up(mission.time[k + 1], mission.time[k])));
-    const double farthest = add_up(std::max(reach[k], reach[k + 1]), half_travel);
+    const double half_travel = speed * (0.5 * (mission.time[k + 1] - mission.time[k]));
+    const double farthest = (std::max(reach[k], reach[k + 1]) + half_travel) * up;
     double step = meridian_convergence_within(mission.origin.latitude, farthest);
     if (!(step <= zone)) step = zone;  // also when the tube is unbounded there (inf, NaN)
     margins[k] = std::max(margins[k], step);
     margins[k + 1] = std::max(margins[k + 1], step);
   }
-  if (n == 1) margins[0] = std::min(zone, meridian_convergence_within(mission.origin.latitude, reach[0]));
+  if (n == 1) margins[0] = std::min(zone, meridian_convergence_within(mission.origin.latitude, reach[0] * up));
   return margins;
 }
 

@@ -11,27 +11,52 @@ namespace {
 // be relabelled to use them in order of first detection: the r-th unlabelled mine
 // can only be taken by an unassociated detection with at least r unassociated
 // detections before it. Without this, a '?' could never be decided.
-void assign_allowed_mines(MissionNetwork& net) {
-  const int k = net.mine_count;
+// The allowed sets of detections given in time order by their mines (-1: unknown).
+std::vector<std::uint64_t> allowed_in_time_order(int k, const std::vector<int>& mines) {
   std::uint64_t labelled = 0;
-  for (const Detection& d : net.detections)
-    if (d.mine >= 0) labelled |= std::uint64_t{1} << d.mine;
+  for (const int mine : mines)
+    if (mine >= 0) labelled |= std::uint64_t{1} << mine;
   std::vector<int> unlabelled;
   for (int i = 0; i < k; ++i)
     if (!(labelled >> i & 1)) unlabelled.push_back(i);
+  std::vector<std::uint64_t> allowed;
   std::size_t earlier = 0;
-  for (Detection& d : net.detections) {
-    if (d.mine >= 0) {
-      d.allowed = std::uint64_t{1} << d.mine;
+  for (const int mine : mines) {
+    if (mine >= 0) {
+      allowed.push_back(std::uint64_t{1} << mine);
       continue;
     }
-    d.allowed = labelled;
-    for (std::size_t r = 0; r < unlabelled.size() && r <= earlier; ++r) d.allowed |= std::uint64_t{1} << unlabelled[r];
+    std::uint64_t a = labelled;
+    for (std::size_t r = 0; r < unlabelled.size() && r <= earlier; ++r) a |= std::uint64_t{1} << unlabelled[r];
+    allowed.push_back(a);
     ++earlier;
   }
+  return allowed;
+}
+
+void assign_allowed_mines(MissionNetwork& net) {
+  std::vector<int> mines;
+  for (const Detection& d : net.detections) mines.push_back(d.mine);
+  const std::vector<std::uint64_t> allowed = allowed_in_time_order(net.mine_count, mines);
+  for (std::size_t j = 0; j < net.detections.size(); ++j) net.detections[j].allowed = allowed[j];
 }
 
 }  // namespace
+
+std::vector<std::uint64_t> allowed_mines_of_marks(const Mission& mission, std::size_t rows) {
+  // The detections' order of build_network: by time, rows in table order among equals.
+  rows = std::min(rows, mission.mark_count());
+  std::vector<std::size_t> order(rows);
+  for (std::size_t j = 0; j < rows; ++j) order[j] = j;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return mission.mark_time[a] < mission.mark_time[b]; });
+  std::vector<int> mines;
+  for (const std::size_t j : order) mines.push_back(mission.mark_mine[j]);
+  const std::vector<std::uint64_t> in_time_order = allowed_in_time_order(mission.mine_count, mines);
+  std::vector<std::uint64_t> by_row(rows);
+  for (std::size_t n = 0; n < rows; ++n) by_row[order[n]] = in_time_order[n];
+  return by_row;
+}
 
 std::vector<PositionFix> gps_fixes(const Mission& m) {
   std::vector<PositionFix> fixes;

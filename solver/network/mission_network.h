@@ -47,6 +47,9 @@ struct MissionNetwork {
 /// The headings of the detections and between-sample offsets take the mission's
 /// zone-wide frame margin, or `frame`'s per-sample ones.
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes);
+/// The mines each of the first `rows` marks may belong to (bit i: mine i) in a network
+/// of those marks alone: the allowed sets build_network() gives their detections.
+std::vector<std::uint64_t> allowed_mines_of_marks(const Mission& mission, std::size_t rows);
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
                              const HeadingFrame& frame);
 

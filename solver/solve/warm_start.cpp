@@ -30,17 +30,12 @@ std::optional<WarmDomains> warm_domains(const Mission& mission, const MissionNet
                                         const MissionSolution& previous, std::string& why) {
   // Symmetry breaking among unlabelled mines depends on the labelled ones: if the
   // added marks change it, the earlier domains assumed other labels.
-  Mission before = mission;
-  const std::size_t rows = previous.mark_count();
-  for (auto* v : {&before.mark_time, &before.mark_range}) v->resize(rows);
-  for (auto* v : {&before.mark_mine, &before.mark_side}) v->resize(rows);
-  const MissionNetwork old_network = build_network(before, before.model, gps_fixes(before));
-  for (const Detection& old_detection : old_network.detections)
-    for (const Detection& detection : network.detections)
-      if (detection.mark == old_detection.mark && detection.allowed != old_detection.allowed) {
-        why = "the added marks name a mine no mark named before";
-        return std::nullopt;
-      }
+  const std::vector<std::uint64_t> before = allowed_mines_of_marks(mission, previous.mark_count());
+  for (const Detection& detection : network.detections)
+    if (detection.mark < before.size() && detection.allowed != before[detection.mark]) {
+      why = "the added marks name a mine no mark named before";
+      return std::nullopt;
+    }
   WarmDomains warm;
   warm.domains = previous.domains;
   add_network_priors(warm.domains, network);    // mines and candidates reset...
