@@ -1,5 +1,6 @@
 #include "io/imports/import_mission.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -42,9 +43,18 @@ void set_mine_count(Mission& m, std::optional<int> mines, const std::string& tru
   }
 }
 
-void read_marks(Mission& m, const std::string& path) {
+// The marks of a CSV. A mission with no mines, when --mines did not say how many, takes
+// the table's largest mine number + 1 (a mission with mines still refuses an unknown
+// number: a typo must not make a phantom mine).
+void read_marks(Mission& m, const std::string& path, std::optional<int> mines) {
   std::ifstream in = open_input(path);
-  replace_marks(m, read_marks_csv(in, path, mark_rules(m)));
+  const bool from_table = !mines && m.mine_count == 0;
+  MarkRules rules = mark_rules(m);
+  if (from_table) rules.mine_count = kMaxMines;
+  MarkTable marks = read_marks_csv(in, path, rules);
+  if (from_table)
+    for (const std::int32_t mine : marks.mine) m.mine_count = std::max(m.mine_count, mine + 1);
+  replace_marks(m, std::move(marks));
 }
 
 }  // namespace
@@ -104,7 +114,7 @@ Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs) {
     m.truth_mines = read_truth_mines_csv(in, inputs.truth_mines);
   }
   set_mine_count(m, inputs.mines, inputs.truth_mines);
-  if (!inputs.marks.empty()) read_marks(m, inputs.marks);
+  if (!inputs.marks.empty()) read_marks(m, inputs.marks, inputs.mines);
   validate_mission(m, nav_csv);
   fill_local_gps(m, inputs.gps);
   return m;
@@ -115,7 +125,7 @@ Mission import_gesmi_txt(const std::string& path, GesmiXy xy, const ImportInputs
   std::ifstream in = open_input(path);
   Mission m = mission_from_gesmi_txt(read_gesmi_txt(in, path), path, inputs.origin.value_or(kRedermorStartFix), model, xy);
   set_mine_count(m, inputs.mines, path);  // a text log has no truth mines
-  if (!inputs.marks.empty()) read_marks(m, inputs.marks);
+  if (!inputs.marks.empty()) read_marks(m, inputs.marks, inputs.mines);
   validate_mission(m, path);
   fill_local_gps(m, path);
   return m;
@@ -123,7 +133,7 @@ Mission import_gesmi_txt(const std::string& path, GesmiXy xy, const ImportInputs
 
 void import_marks(Mission& m, const std::string& marks_csv, std::optional<int> mines) {
   set_mine_count(m, mines, "the mission's truth");
-  read_marks(m, marks_csv);
+  read_marks(m, marks_csv, mines);
 }
 
 }  // namespace gesmi::io

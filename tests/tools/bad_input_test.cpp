@@ -101,7 +101,7 @@ TEST(BadInput, ImportNavNamesFileLineFieldAndReason) {
        {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--marks", "@/marks.csv", "--mines", "1"}, {"@/marks.csv:2: time: 5 s is outside the mission [0, 0.2] s"}},
       {"unknown side", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"marks.csv", "time,mine,range,side\n0.1,0,20,left\n"}},
        {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--marks", "@/marks.csv", "--mines", "1"}, {"@/marks.csv:2: side: expected starboard, port, +1 or -1, found 'left'"}},
-      {"unknown mine", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"marks.csv", kMarks}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--marks", "@/marks.csv"},
+      {"unknown mine", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"marks.csv", kMarks}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--marks", "@/marks.csv", "--mines", "0"},
        {"@/marks.csv:2: mine: unknown mine 0: the mission has no mines"}},
       {"range beyond the sonar", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"marks.csv", "time,mine,range,side\n0.1,?,90,starboard\n"}},
        {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--marks", "@/marks.csv"}, {"@/marks.csv:2: range: 90 m is beyond the sonar's maximum range"}},

@@ -46,10 +46,21 @@ TEST(CmdImport, MarksReplaceTheTableAndMayGrowTheMineCountOnRequest) {
   const std::string mission = folder + "/sim.h5";
   ASSERT_EQ(run_gesmi({"import", "gesmi-txt", source_dir() + "/missions/gesmi_txt/redermor_start.txt", "-o", mission}).exit_code, 0);
   write(folder + "/marks.csv", "time,mine,range,side\n10,2,30,starboard\n20,?,45,port\n");
-  // No mines yet: mine 2 is unknown until --mines says how many there are.
+  // No mines yet: the table's largest mine number + 1.
   CommandResult r = run_gesmi({"import", "marks", folder + "/marks.csv", "--into", mission, "-o", folder + "/out.h5"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("3 mines"), std::string::npos) << r.out;
+  EXPECT_EQ(io::read_mission(folder + "/out.h5").mine_count, 3);
+  // A mission with mines refuses a number beyond them (a typo is not a new mine)...
+  write(folder + "/typo.csv", "time,mine,range,side\n10,7,30,starboard\n");
+  r = run_gesmi({"import", "marks", folder + "/typo.csv", "--into", folder + "/out.h5", "-o", folder + "/typo.h5"});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("mine: unknown mine 2: the mission has no mines"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("mine: unknown mine 7: the mission's mines are 0..2"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(folder + "/typo.h5"));
+  // ...and --mines still decides on a mission without mines.
+  r = run_gesmi({"import", "marks", folder + "/marks.csv", "--into", mission, "--mines", "2", "-o", folder + "/two.h5"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("mine: unknown mine 2: the mission's mines are 0..1"), std::string::npos) << r.err;
   // Writing over the input is refused (the same file, whatever the path says), the input intact.
   r = run_gesmi({"import", "marks", folder + "/marks.csv", "--into", mission, "--mines", "3", "-o", folder + "/./sim.h5"});
   EXPECT_EQ(r.exit_code, 2);
