@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <stdexcept>
 
 namespace gesmi {
 
@@ -19,6 +20,7 @@ void ArrowheadChain::reset() {
   const auto q = static_cast<Eigen::Index>(q_);
   d_ = MatX::Identity(q, q) * prior_info_;
   eta_m_.setZero();
+  solved_ = false;
 }
 
 void ArrowheadChain::add_position(std::size_t k, const Mat3& information, const Vec3& mean) {
@@ -51,6 +53,8 @@ void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVe
 // segment lets the q x q updates happen once per event instead of once per step, and
 // the backward recursions run on 3x3 blocks, so a step costs a few 3x3 products.
 void ArrowheadChain::solve() {
+  if (solved_) throw std::logic_error("ArrowheadChain::solve: the factors were solved already; reset() and add them again");
+  solved_ = true;
   const auto q = static_cast<Eigen::Index>(q_);
   std::vector<Step>& steps = steps_;
   steps.resize(n_);

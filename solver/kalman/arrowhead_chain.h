@@ -26,7 +26,8 @@ class ArrowheadChain {
   ArrowheadChain(std::size_t n, std::size_t q, double prior_info = 1e-12);
 
   /// Removes every factor, keeping the memory: a relinearised system is built again in
-  /// the same buffers (at 10^7 steps, reallocating them cost more than the solve).
+  /// the same buffers (at 10^7 steps, reallocating them cost more than the solve). The
+  /// solve works in place, so factors are added again only after reset().
   void reset();
   /// Frees what only solve() needs, once no further solve follows (the means and
   /// covariances stay).
@@ -42,10 +43,10 @@ class ArrowheadChain {
   /// One scalar measurement z = hp . p_k + hm . m with information w (hm has q entries).
   void add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVectorXd& hm, double z, double w);
 
-  /// Solves; afterwards mean(k), covariance(k), static_mean(), static_covariance().
+  /// Solves, once per set of factors (std::logic_error otherwise: the factors were
+  /// overwritten); afterwards mean(k), covariance(k), static_mean(), static_covariance().
   void solve();
-  /// The estimate of (p_k, m) from the factors at steps <= k only (the filter), valid
-  /// during the forward pass only through filtered_at() called from a factor callback.
+  /// The smoothed mean and covariance of p_k; meaningful only after solve().
   const Vec3& mean(std::size_t k) const { return eta_[k]; }
   const Mat3& covariance(std::size_t k) const { return diag_[k]; }
   const VecX& static_mean() const { return m_mean_; }
@@ -76,6 +77,7 @@ class ArrowheadChain {
   VecX m_mean_;
   MatX m_cov_;
   std::vector<Step> steps_;  // kept between solves
+  bool solved_ = false;      // the factors were overwritten by a solve; reset() clears it
 };
 
 }  // namespace gesmi

@@ -48,7 +48,7 @@ double speed_bound(const Mission& m) {
       const double bound = widths[i]->empty() ? relative * speed + m.model.dvl_absolute : (*widths[i])[k];
       squared += (speed + bound) * (speed + bound);
     }
-    if (!(squared <= largest)) largest = squared;  // a NaN stays, and gives the zone's margin
+    largest = std::max(largest, squared);  // readings are finite (validate_mission)
     if (k + 1 < m.size()) longest = std::max(longest, sub_up(m.time[k + 1], m.time[k]));
   }
   largest = largest * (1.0 + 16.0 * std::numeric_limits<double>::epsilon()) + std::numeric_limits<double>::min();

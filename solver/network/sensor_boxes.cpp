@@ -27,7 +27,7 @@ Vec3I SensorBoxes::velocity(std::size_t k) const {
   // tangent frame does to distances (docs/model.md): up to 1.25e-6 of the distance
   // travelled 10 km from the origin, and depth / R (1.6e-5 at 100 m).
   const auto component = [&](const std::vector<double>& v, const std::vector<double>& hw) {
-    const double bound = add_up(mul_up(model_.dvl_relative + kFrameScaleMargin, std::fabs(v[k])), model_.dvl_absolute);
+    const double bound = add_up(mul_up(add_up(model_.dvl_relative, kFrameScaleMargin), std::fabs(v[k])), model_.dvl_absolute);
     return reading(v, hw, k, bound);
   };
   return Vec3I(component(m_.vx, m_.half_widths.vx), component(m_.vy, m_.half_widths.vy),

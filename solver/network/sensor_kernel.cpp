@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "solver/interval/rounding.h"
 #include "solver/interval/upward_rounding.h"
@@ -186,9 +187,11 @@ void resize(WorldVelocityBoxes& w, std::size_t n) {
       turn_east = half.h * (mag(a[1]) + mag(b[1]));
     }
     for (int i = 0; i < 3; ++i) d[i][k] = Interval::from_bounds(-inc[i].n, inc[i].h);
-    // The conversion to float rounds up too.
-    out.turn_north[k] = static_cast<float>(turn_north);
-    out.turn_east[k] = static_cast<float>(turn_east);
+    // The conversion to float rounds up too; beyond the float range it is undefined, so
+    // those (absurd) sensitivities are infinite.
+    constexpr double kFloatMax = std::numeric_limits<float>::max();
+    out.turn_north[k] = turn_north <= kFloatMax ? static_cast<float>(turn_north) : std::numeric_limits<float>::infinity();
+    out.turn_east[k] = turn_east <= kFloatMax ? static_cast<float>(turn_east) : std::numeric_limits<float>::infinity();
   }
 }
 

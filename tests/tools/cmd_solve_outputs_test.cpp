@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 
@@ -38,6 +39,23 @@ TEST(CmdSolveOutputs, WritesTheResultAloneUnlessSiblingsAreAsked) {
   EXPECT_EQ(names_in(out), (std::set<std::string>{"r.h5", "r.envelope.png"})) << "stale siblings were kept";
   EXPECT_NE(stats.out.find("\"files\": [\"" + out + "/r.h5\", \"" + out + "/r.envelope.png\"]"), std::string::npos)
       << stats.out;
+}
+
+// The solve reads no truth, but the envelope picture of a simulated mission draws it
+// (the blue path and dots, plot_envelope.cpp): counted in the PNG by matplotlib.
+TEST(CmdSolveOutputs, TheEnvelopePictureOfASimulatedMissionShowsTheTruth) {
+  const std::string folder = temp_folder("solve-truth");
+  ASSERT_EQ(run_gesmi({"simulate", "--seed", "4", "--duration", "600", "-o", folder + "/m.h5"}).exit_code, 0);
+  const CommandResult r = run_gesmi({"solve", folder + "/m.h5", "-o", folder + "/r.h5", "--png"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Truth blue is (0.1, 0.3, 0.9): pixels whose blue exceeds their red by 0.3, line
+  // edges included. Nothing else is blue: the same mission without its truth gives none,
+  // with it about 2,000.
+  const std::string count =
+      "/usr/bin/python3 -c \"import sys, matplotlib.image as i; a = i.imread(sys.argv[1]); "
+      "sys.exit(0 if (a[:, :, 2] > a[:, :, 0] + 0.3).sum() > 500 else 1)\" " +
+      folder + "/r.envelope.png";
+  EXPECT_EQ(std::system(count.c_str()), 0) << "no truth drawn";
 }
 
 }  // namespace

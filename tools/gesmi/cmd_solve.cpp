@@ -46,7 +46,9 @@ int run_solve(std::span<const std::string> args) {
   Progress progress("gesmi solve:");
   progress.update(-1.0, "reading " + mission_path);
   auto start = Clock::now();
-  Mission mission = io::read_mission(mission_path, io::TruthReading::skip);  // solve never looks at it
+  // The solve never looks at the truth; only the envelope picture draws it.
+  const io::SolveSiblings siblings = parse_solve_siblings(v);
+  Mission mission = io::read_mission(mission_path, siblings.envelope_png ? io::TruthReading::read : io::TruthReading::skip);
   if (v.count("config")) io::merge_sensor_model_yaml(v["config"].as<std::string>(), mission.model);
   apply_mine_count(v, mission);
   // Hashed once: the warm start compares it, the result stores it.
@@ -77,7 +79,7 @@ int run_solve(std::span<const std::string> args) {
   result.version = std::string(io::version());
   result.solution.timings_ms = timings;
   const std::vector<std::string> written = io::write_solve_outputs(
-      result, mission, output, std::filesystem::path(mission_path).filename().string(), parse_solve_siblings(v));
+      result, mission, output, std::filesystem::path(mission_path).filename().string(), siblings);
   outputs.commit();
   timings["write"] = elapsed_ms(start);
   progress.finish();

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <random>
@@ -84,6 +86,11 @@ TEST(ArrowheadChain, MatchesADenseLeastSquaresSolve) {
   }
   EXPECT_LT((b.chain.static_mean() - x.tail(q)).norm(), 1e-8);
   EXPECT_LT((b.chain.static_covariance() - cov.bottomRightCorner(q, q)).norm(), 1e-8);
+  // The solve worked in place: a second one without reset() and new factors is refused,
+  // and after release_workspace() too.
+  EXPECT_THROW(b.chain.solve(), std::logic_error);
+  b.chain.release_workspace();
+  EXPECT_THROW(b.chain.solve(), std::logic_error);
 }
 
 // Textbook Kalman filter and RTS smoother for x(k+1) = x(k) + u(k) + w, y(k) = x(k) + v.
