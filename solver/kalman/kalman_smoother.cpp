@@ -128,9 +128,12 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
   // (this dead reckoning is the first linearisation point; its depths set the depth
   // variances of the first pass, independently of each reading's error)
   lin.position[0] = p;
+  Mat3d r1 = n > 0 ? rotation(m, 0) : Mat3d::Identity();  // each sample's rotation once
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const double dt = m.time[k + 1] - m.time[k];
-    p += 0.5 * dt * (rotation(m, k) * Vec3d(m.vx[k], m.vy[k], m.vz[k]) + rotation(m, k + 1) * Vec3d(m.vx[k + 1], m.vy[k + 1], m.vz[k + 1]));
+    const Mat3d r0 = r1;
+    r1 = rotation(m, k + 1);
+    p += 0.5 * dt * (r0 * Vec3d(m.vx[k], m.vy[k], m.vz[k]) + r1 * Vec3d(m.vx[k + 1], m.vy[k + 1], m.vz[k + 1]));
     lin.position[k + 1] = p;
   }
   lin.mine.assign(k_mines, Vec3d::Zero());
