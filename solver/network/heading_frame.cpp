@@ -130,41 +130,36 @@ void framed_increments(const SensorPriors& priors, const HeadingFrame& frame, Us
   }
 }
 
-}  // namespace
-
-TubeDomains sensor_domains_in(const SensorPriors& priors, const HeadingFrame& frame) {
+// The domains of the framed increments, with the given depth boxes and vertical
+// increments (those of the priors, copied or moved), intersected with the apart hulls'.
+TubeDomains framed_domains(const SensorPriors& priors, const HeadingFrame& frame, std::vector<Interval> depth,
+                           std::vector<Interval> dz) {
   TubeDomains d;
-  d.px.assign(priors.depth.size(), Interval::entire());
-  d.py.assign(priors.depth.size(), Interval::entire());
-  d.pz = priors.depth;
+  d.px.assign(depth.size(), Interval::entire());
+  d.py.assign(depth.size(), Interval::entire());
+  d.pz = std::move(depth);
+  d.dz = std::move(dz);
   d.dx.resize(priors.dx.size());
   d.dy.resize(priors.dx.size());
-  d.dz.resize(priors.dx.size());
-  framed_increments(priors, frame, [&](std::size_t k, const Interval& dx, const Interval& dy, const Interval& dz) {
+  framed_increments(priors, frame, [&](std::size_t k, const Interval& dx, const Interval& dy, const Interval& framed_dz) {
     d.dx[k] = dx;
     d.dy[k] = dy;
-    d.dz[k] = dz;
+    d.dz[k] = intersect(d.dz[k], framed_dz);  // (the priors' own dz, or the whole line once moved out)
   });
   return d;
 }
 
+}  // namespace
+
+TubeDomains sensor_domains_in(const SensorPriors& priors, const HeadingFrame& frame) {
+  return framed_domains(priors, frame, priors.depth, priors.dz);
+}
+
 TubeDomains take_sensor_domains(SensorPriors& priors, const HeadingFrame& frame) {
-  TubeDomains d;
-  d.px.assign(priors.depth.size(), Interval::entire());
-  d.py.assign(priors.depth.size(), Interval::entire());
-  d.pz = std::move(priors.depth);
-  d.dz = std::move(priors.dz);
+  std::vector<Interval> depth = std::move(priors.depth), dz = std::move(priors.dz);
   priors.depth = {};
   priors.dz = {};
-  d.dx.resize(priors.dx.size());
-  d.dy.resize(priors.dx.size());
-  // With dz moved out, the framed dz is the apart hull's (or the whole line): intersected.
-  framed_increments(priors, frame, [&](std::size_t k, const Interval& dx, const Interval& dy, const Interval& dz) {
-    d.dx[k] = dx;
-    d.dy[k] = dy;
-    d.dz[k] = intersect(d.dz[k], dz);
-  });
-  return d;
+  return framed_domains(priors, frame, std::move(depth), std::move(dz));
 }
 
 void narrow_to_frame(TubeDomains& d, const SensorPriors& priors, const HeadingFrame& frame) {

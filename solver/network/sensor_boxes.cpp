@@ -117,7 +117,7 @@ Vec3I SensorBoxes::step_increment(const SampleBoxes& a, const SampleBoxes& b, st
   // world component of R (v ± e) spans ± e at least: a rotation's rows have an L1 norm
   // >= 1), so the trapezoid's ± J dt² / 12 can only stick out when J dt > 6
   // max_acceleration; elsewhere the second rotation per step is not worth its cost.
-  if (model_.max_jerk * dt.hi() > 6.0 * model_.max_acceleration) {
+  if (trapezoid_takes_rate_hull(model_, dt.hi())) {
     StepTurn hull_turn;
     const Vec3I hull = rate_hull_increment(a, b, k, &hull_turn);
     Vec3I both;

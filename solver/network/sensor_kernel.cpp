@@ -226,7 +226,7 @@ std::vector<std::size_t> kernel_step_increments(const Mission& mission, const Se
     }
     if (model.step_model == StepModel::trapezoid)
       for (std::size_t k = start; k < end; ++k)
-        if (model.max_jerk * sub_up(mission.time[k + 1], mission.time[k]) > 6.0 * model.max_acceleration)
+        if (trapezoid_takes_rate_hull(model, sub_up(mission.time[k + 1], mission.time[k])))
           left.push_back(k);
     std::sort(left.begin() + static_cast<std::ptrdiff_t>(before), left.end());
     left.erase(std::unique(left.begin() + static_cast<std::ptrdiff_t>(before), left.end()), left.end());
