@@ -13,6 +13,7 @@
 #include "io/format_error.h"
 #include "io/imports/import_nav_csv.h"
 #include "io/files/sensor_model_yaml.h"
+#include "io/time/utc_time.h"
 
 namespace gesmi::io {
 namespace {
@@ -45,18 +46,22 @@ class Row {
 };
 
 void write_file(const fs::path& path, void (*writer)(const Mission&, std::ostream&), const Mission& m) {
-  AtomicOutput file(path.string());
-  {
-    std::ofstream out(file.temp_path(), std::ios::binary);
-    if (!out) throw FormatError(path.string() + ": cannot create the file: " + std::strerror(errno));
-    writer(m, out);
-    out.flush();
-    if (!out) throw FormatError(path.string() + ": cannot write (disk full?)");
-  }
-  file.commit();
+  write_text_file(path.string(), [&](std::ostream& out) { writer(m, out); });
 }
 
 }  // namespace
+
+void write_text_file(const std::string& path, const std::function<void(std::ostream&)>& writer) {
+  AtomicOutput file(path);
+  {
+    std::ofstream out(file.temp_path(), std::ios::binary);
+    if (!out) throw FormatError(path + ": cannot create the file: " + std::strerror(errno));
+    writer(out);
+    out.flush();
+    if (!out) throw FormatError(path + ": cannot write (disk full?)");
+  }
+  file.commit();
+}
 
 void write_nav_csv(const Mission& m, std::ostream& out) {
   std::string header = "time,roll,pitch,heading,vx,vy,vz,altitude,depth";
@@ -125,6 +130,7 @@ std::vector<std::string> import_arguments(const Mission& m, const std::string& o
                                    "--mines", std::to_string(m.mine_count)};
   if (m.has_truth()) args.insert(args.end(), {"--truth", "truth.csv"});
   if (!m.truth_mines.empty()) args.insert(args.end(), {"--truth-mines", "truth_mines.csv"});
+  if (m.epoch) args.insert(args.end(), {"--epoch", format_iso8601(*m.epoch)});
   args.insert(args.end(), {"-o", output});
   return args;
 }

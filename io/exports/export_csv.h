@@ -7,6 +7,7 @@
 // Not exported: the simulator's per-mark and per-fix diagnostics (/truth/marks_*,
 // /truth/gps_outlier, /truth/missed_marks), which only the HDF5 file holds.
 
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -25,6 +26,10 @@ void write_truth_mines_csv(const Mission& mission, std::ostream& out);
 /// mission from the folder's files (names relative to the folder), ending with
 /// "-o" and `output`.
 std::vector<std::string> import_arguments(const Mission& mission, const std::string& output);
+
+/// Writes a text file through `writer` under a temporary name, renamed into place
+/// when complete.
+void write_text_file(const std::string& path, const std::function<void(std::ostream&)>& writer);
 
 /// Checks before any work that `folder` can be created: its parent exists and is
 /// writable, and the folder does not exist or is empty.

@@ -10,6 +10,8 @@
 #include "io/hdf5/h5_file.h"
 #include "io/hdf5/h5_format.h"
 #include "io/imports/mark_rules.h"
+#include "io/text/message_text.h"
+#include "io/time/utc_time.h"
 #include "solver/network/mission_network.h"
 
 namespace gesmi::io {
@@ -17,7 +19,9 @@ namespace {
 
 constexpr const char* kFormat = "gesmi-mission";
 // 2: the sensor model gained max_jerk and step_model (version-1 files take their defaults).
-constexpr H5FormatVersions kVersions{.current = 2, .oldest = 1, .when_absent = 0};
+// 3: the sensor model gained max_depth_rate and max_altitude_rate; the optional root
+//    attribute epoch_utc (ISO 8601, whole seconds, Z).
+constexpr H5FormatVersions kVersions{.current = 3, .oldest = 1, .when_absent = 0};
 
 std::string half_width_dataset(const NavChannel& c) { return "/nav/half_widths/" + std::string(c.name); }
 
@@ -152,6 +156,12 @@ Mission read_mission(const std::string& path, TruthReading truth) {
     throw FormatError(path + ": /: mine_count must be between 0 and " + std::to_string(kMaxMines));
   m.mine_count = static_cast<int>(*mines);
   m.model = read_model_attributes(f, "/model", version);
+  if (const auto epoch = f.string_attribute("/", "epoch_utc")) {
+    const ParsedTime parsed = parse_iso8601(*epoch);
+    if (!parsed.time || parsed.time->fraction != 0.0)
+      throw FormatError(path + ": /: epoch_utc: expected a UTC time YYYY-MM-DDThh:mm:ssZ, found " + quoted_input(*epoch));
+    m.epoch = parsed.time->seconds;
+  }
 
   // Navigation, read column by column into the flat arrays (one copy of the data).
   m.time = f.read_doubles("/nav/time", 1);
@@ -273,6 +283,7 @@ void write_mission(const Mission& m, const std::string& path) {
     f.set_attribute("/", "origin_latitude", m.origin.latitude);
     f.set_attribute("/", "origin_longitude", m.origin.longitude);
     f.set_attribute("/", "mine_count", static_cast<std::int64_t>(m.mine_count));
+    if (m.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*m.epoch));
     write_model_attributes(f, "/model", m.model);
     f.close();
   }

@@ -7,10 +7,12 @@
 // 'port', '+1', '1' or '-1'. Rows in any order.
 
 #include <cstdint>
+#include <optional>
 #include <istream>
 #include <string>
 #include <vector>
 
+#include "io/imports/column_map.h"
 #include "io/imports/mark_rules.h"
 #include "solver/mission/mission.h"
 
@@ -24,6 +26,11 @@ struct MarkTable {
 /// Reads and validates a marks CSV; FormatError "name:LINE: field: reason". May hold
 /// no mark.
 MarkTable read_marks_csv(std::istream& in, const std::string& name, const MarkRules& rules);
+
+/// A marks file read through a column map (column_map.h: time, mine, range, side);
+/// absolute times are taken relative to the mission's `epoch` (needed for them).
+MarkTable read_mapped_marks_csv(std::istream& in, const std::string& name, const MarkRules& rules, const ColumnMap& map,
+                                std::optional<std::int64_t> epoch);
 
 /// Replaces the mission's mark table. The per-mark truth of a simulated mission
 /// (/truth/marks_outlier, /truth/marks_mine) describes the old rows and is dropped.

@@ -7,7 +7,10 @@
 #include "io/imports/csv_number.h"
 #include "io/format_error.h"
 #include "io/geodesy.h"
+#include "io/imports/column_map.h"
 #include "io/imports/import_gps_csv.h"
+#include "io/imports/import_mapped_nav.h"
+#include "io/imports/import_nmea.h"
 #include "io/imports/import_marks_csv.h"
 #include "io/imports/import_nav_csv.h"
 #include "io/imports/import_truth_csv.h"
@@ -46,25 +49,79 @@ void set_mine_count(Mission& m, std::optional<int> mines, const std::string& tru
 // The marks of a CSV. A mission with no mines, when --mines did not say how many, takes
 // the table's largest mine number + 1 (a mission with mines still refuses an unknown
 // number: a typo must not make a phantom mine).
-void read_marks(Mission& m, const std::string& path, std::optional<int> mines) {
+void read_marks(Mission& m, const std::string& path, std::optional<int> mines, const std::string& map) {
   std::ifstream in = open_input(path);
   const bool from_table = !mines && m.mine_count == 0;
   MarkRules rules = mark_rules(m);
   if (from_table) rules.mine_count = kMaxMines;
-  MarkTable marks = read_marks_csv(in, path, rules);
+  MarkTable marks = map.empty() ? read_marks_csv(in, path, rules)
+                                : read_mapped_marks_csv(in, path, rules, read_column_map(map, marks_map_schema(), false), m.epoch);
   if (from_table)
     for (const std::int32_t mine : marks.mine) m.mine_count = std::max(m.mine_count, mine + 1);
   replace_marks(m, std::move(marks));
 }
 
+// The fixes of an NMEA log inside the navigation's span, in seconds after its epoch.
+GpsLog read_nmea_gps(const std::string& path, const Mission& m, const ImportInputs& inputs, std::vector<std::string>& notes) {
+  if (!m.epoch)
+    throw FormatError(path + ": NMEA fixes carry UTC times and the navigation has none: give its time as iso8601 or epoch in "
+                             "the map, or --epoch for a log in seconds");
+  std::ifstream in = open_input(path);
+  const NmeaFixes fixes = read_nmea(in, path, inputs.gps_date);
+  GpsLog log;
+  std::size_t outside = 0, repeated = 0;
+  for (std::size_t i = 0; i < fixes.time.size(); ++i) {
+    const double t = fixes.time[i].since(*m.epoch);
+    if (t < m.time.front() || t > m.time.back()) {
+      ++outside;
+      continue;
+    }
+    if (!log.time.empty() && !(t > log.time.back())) {
+      if (t == log.time.back()) {
+        ++repeated;  // the same fix from a second talker
+        continue;
+      }
+      throw FormatError(path + ":" + std::to_string(fixes.line[i]) + ": GGA field 1: the fix goes back in time (" +
+                        format_number(t) + " s after " + format_number(log.time.back()) + " s on line " +
+                        std::to_string(log.line.back()) + ")");
+    }
+    log.time.push_back(t);
+    log.latitude.push_back(fixes.latitude[i]);
+    log.longitude.push_back(fixes.longitude[i]);
+    log.line.push_back(fixes.line[i]);
+  }
+  notes.push_back(path + ": " + std::to_string(log.time.size()) + " GGA fixes taken; skipped: " +
+                  std::to_string(fixes.bad_checksum) + " sentences with a bad checksum, " + std::to_string(fixes.no_fix) +
+                  " GGA without a fix, " + std::to_string(outside) + " fixes outside the navigation's time span, " +
+                  std::to_string(repeated) + " repeated; " + std::to_string(fixes.other) + " other sentences ignored");
+  return log;
+}
+
+bool is_nmea(const std::string& path, GpsFormat format) {
+  if (format != GpsFormat::detect) return format == GpsFormat::nmea;
+  std::ifstream in = open_input(path);
+  return looks_like_nmea(in);
+}
+
 }  // namespace
 
-Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs) {
+Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs, std::vector<std::string>* notes_out) {
+  std::vector<std::string> notes;
   Mission m;
   m.model = model_from(inputs);
+  m.epoch = inputs.epoch;
   {
     std::ifstream in = open_input(nav_csv);
-    NavLog nav = read_nav_csv(in, nav_csv);
+    NavLog nav;
+    if (inputs.map.empty()) {
+      nav = read_nav_csv(in, nav_csv);
+    } else {
+      MappedNavLog mapped = read_mapped_nav(in, nav_csv, read_column_map(inputs.map, nav_map_schema(), true), m.model, m.epoch);
+      nav = std::move(mapped.log);
+      m.model = mapped.model;
+      m.epoch = mapped.epoch;
+      for (std::string& note : mapped.notes) notes.push_back(nav_csv + ": " + note);
+    }
     m.time = std::move(nav.time);
     m.roll = std::move(nav.roll);
     m.pitch = std::move(nav.pitch);
@@ -78,8 +135,12 @@ Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs) {
   }
   GpsLog gps;
   if (!inputs.gps.empty()) {
-    std::ifstream in = open_input(inputs.gps);
-    gps = read_gps_csv(in, inputs.gps, m.time.front(), m.time.back());
+    if (is_nmea(inputs.gps, inputs.gps_format)) {
+      gps = read_nmea_gps(inputs.gps, m, inputs, notes);
+    } else {
+      std::ifstream in = open_input(inputs.gps);
+      gps = read_gps_csv(in, inputs.gps, m.time.front(), m.time.back());
+    }
   }
   if (inputs.origin) {
     m.origin = *inputs.origin;
@@ -114,9 +175,10 @@ Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs) {
     m.truth_mines = read_truth_mines_csv(in, inputs.truth_mines);
   }
   set_mine_count(m, inputs.mines, inputs.truth_mines);
-  if (!inputs.marks.empty()) read_marks(m, inputs.marks, inputs.mines);
+  if (!inputs.marks.empty()) read_marks(m, inputs.marks, inputs.mines, inputs.marks_map);
   validate_mission(m, nav_csv);
   fill_local_gps(m, inputs.gps);
+  if (notes_out) *notes_out = std::move(notes);
   return m;
 }
 
@@ -125,15 +187,15 @@ Mission import_gesmi_txt(const std::string& path, GesmiXy xy, const ImportInputs
   std::ifstream in = open_input(path);
   Mission m = mission_from_gesmi_txt(read_gesmi_txt(in, path), path, inputs.origin.value_or(kRedermorStartFix), model, xy);
   set_mine_count(m, inputs.mines, path);  // a text log has no truth mines
-  if (!inputs.marks.empty()) read_marks(m, inputs.marks, inputs.mines);
+  if (!inputs.marks.empty()) read_marks(m, inputs.marks, inputs.mines, inputs.marks_map);
   validate_mission(m, path);
   fill_local_gps(m, path);
   return m;
 }
 
-void import_marks(Mission& m, const std::string& marks_csv, std::optional<int> mines) {
+void import_marks(Mission& m, const std::string& marks_csv, std::optional<int> mines, const std::string& map) {
   set_mine_count(m, mines, "the mission's truth");
-  read_marks(m, marks_csv, mines);
+  read_marks(m, marks_csv, mines, map);
 }
 
 }  // namespace gesmi::io

@@ -5,34 +5,46 @@
 // Mission with its GPS fixes in the local frame. Errors are FormatError naming the
 // file, the line, the field and the reason.
 
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "io/imports/import_gesmi_txt.h"
 #include "solver/mission/mission.h"
 
 namespace gesmi::io {
 
+enum class GpsFormat { detect, csv, nmea };
+
 /// Optional inputs shared by the importers (empty path: not given).
 struct ImportInputs {
   std::string config;       // sensor model YAML (io/files/sensor_model_yaml.h) over the defaults
-  std::string gps;          // GPS CSV
+  std::string map;          // column map of the navigation log (column_map.h); empty: the exact-header CSV
+  std::string gps;          // GPS CSV or NMEA log
+  GpsFormat gps_format = GpsFormat::detect;
+  std::optional<std::int64_t> gps_date;  // days since 1970 of an NMEA log's first fix, when it has no RMC
   std::string marks;        // marks CSV
+  std::string marks_map;    // column map of the marks file; empty: the exact-header CSV
+  std::optional<std::int64_t> epoch;  // UTC seconds of t = 0 for a log in seconds (--epoch)
   std::string truth;        // truth.csv (simulated missions)
   std::string truth_mines;  // truth_mines.csv
   std::optional<GeoOrigin> origin;  // default: the first GPS fix (nav), the Redermor start fix (gesmi-txt)
   std::optional<int> mines;         // default: the rows of truth_mines, else 0
 };
 
-/// `gesmi import nav`: a navigation CSV and the optional inputs.
-Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs);
+/// `gesmi import nav`: a navigation CSV and the optional inputs. `notes` (when given)
+/// receives what the import did that the user should hear of (skipped sentences,
+/// channels enclosed between readings), one line each.
+Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs, std::vector<std::string>* notes = nullptr);
 
 /// `gesmi import gesmi-txt`: a GESMI text log; inputs.gps and the truth files are
 /// not used (the log carries its own positions).
 Mission import_gesmi_txt(const std::string& path, GesmiXy xy, const ImportInputs& inputs);
 
-/// `gesmi import marks`: replaces the mission's mark table by a marks CSV. `mines`,
-/// when given, sets the number of mines first (it must match /truth/mines if any).
-void import_marks(Mission& mission, const std::string& marks_csv, std::optional<int> mines);
+/// `gesmi import marks`: replaces the mission's mark table by a marks CSV (read
+/// through `map` when not empty). `mines`, when given, sets the number of mines first
+/// (it must match /truth/mines if any).
+void import_marks(Mission& mission, const std::string& marks_csv, std::optional<int> mines, const std::string& map = {});
 
 }  // namespace gesmi::io

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -88,6 +89,9 @@ struct Mission {
   int mine_count = 0;
 
   GeoOrigin origin;
+  // UTC time of t = 0 in whole seconds since 1970-01-01 (Unix time), when the log gave
+  // absolute times or the import was told it (--epoch).
+  std::optional<std::int64_t> epoch;
   SensorModel model;
 
   // Ground truth of simulated missions (empty otherwise).

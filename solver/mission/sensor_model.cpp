@@ -23,6 +23,8 @@ const std::vector<SensorModelField>& sensor_model_fields() {
       {"along_track_tolerance", &SensorModel::along_track_tolerance, "m", "|along-track offset| of a marked mine from the sonar plane"},
       {"max_attitude_rate", &SensorModel::max_attitude_rate, "rad/s", "bound on roll, pitch and heading rates between samples"},
       {"max_acceleration", &SensorModel::max_acceleration, "m/s²", "bound on the rate of each DVL component between samples"},
+      {"max_depth_rate", &SensorModel::max_depth_rate, "m/s", "bound on the depth rate, between a log's depth readings", 3},
+      {"max_altitude_rate", &SensorModel::max_altitude_rate, "m/s", "bound on the altitude rate, between a log's altitude readings", 3},
       {"max_jerk", &SensorModel::max_jerk, "m/s³", "bound on the second derivative of the world velocity within a step (trapezoid step model)", 2},
   };
   return fields;

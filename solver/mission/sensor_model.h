@@ -53,6 +53,10 @@ struct SensorModel {
   // box valid over a whole step (docs/model.md): the simulator honours them.
   double max_attitude_rate = 0.05;  // rad/s, roll, pitch and heading
   double max_acceleration = 0.2;    // m/s², each DVL component
+  // Rate bounds that enclose the depth and the altitude between their own readings
+  // when a log reads them slower than the DVL (docs/model.md, "Readings between samples").
+  double max_depth_rate = 0.5;      // m/s
+  double max_altitude_rate = 1.0;   // m/s (vertical speed plus sea-floor slope times speed)
   // Bound on |d²(R v)/dt²| (the jerk of the position) within a step, for the
   // trapezoid step model (docs/model.md justifies 1 m/s³).
   double max_jerk = 1.0;            // m/s³

@@ -7,6 +7,7 @@
 #include "io/output/atomic_output.h"
 #include "io/imports/import_mission.h"
 #include "io/text/message_text.h"
+#include "io/time/utc_time.h"
 #include "io/files/mission_file.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
@@ -34,33 +35,62 @@ std::optional<int> parse_mines(const po::variables_map& v) {
   return static_cast<int>(k);
 }
 
+std::optional<std::int64_t> parse_epoch(const po::variables_map& v) {
+  if (!v.count("epoch")) return std::nullopt;
+  const std::string text = v["epoch"].as<std::string>();
+  const io::ParsedTime parsed = io::parse_iso8601(text);
+  if (!parsed.time || parsed.time->fraction != 0.0)
+    throw UsageError("--epoch: expected the UTC time of t = 0 in whole seconds, like 2026-05-14T08:00:00Z" +
+                     (parsed.error.empty() ? std::string() : " (" + parsed.error + ")"));
+  return parsed.time->seconds;
+}
+
+std::optional<std::int64_t> parse_date(const po::variables_map& v) {
+  if (!v.count("date")) return std::nullopt;
+  const std::string text = v["date"].as<std::string>();
+  const io::ParsedTime parsed = io::parse_iso8601(text + "T00:00:00Z");
+  if (text.size() != 10 || !parsed.time) throw UsageError("--date: expected a UTC date YYYY-MM-DD, got " + io::quoted_input(text));
+  return parsed.time->seconds / 86400;
+}
+
+io::GpsFormat parse_gps_format(const po::variables_map& v) {
+  const std::string text = v["gps-format"].as<std::string>();
+  if (text == "detect") return io::GpsFormat::detect;
+  if (text == "csv") return io::GpsFormat::csv;
+  if (text == "nmea") return io::GpsFormat::nmea;
+  throw UsageError("--gps-format: expected detect, csv or nmea, got " + io::quoted_input(text));
+}
+
 std::string optional_path(const po::variables_map& v, const char* name) {
   return v.count(name) ? v[name].as<std::string>() : std::string();
 }
 
-void print_summary(const Mission& m, const std::string& output) {
-  std::printf("wrote %s: %zu samples over %g s, %zu GPS fixes, %zu marks, %d mines\n", output.c_str(), m.size(),
-              m.time.back() - m.time.front(), m.gps_time.size(), m.mark_count(), m.mine_count);
+void print_summary(const Mission& m, const std::string& output, const std::vector<std::string>& notes = {}) {
+  for (const std::string& note : notes) std::printf("%s\n", note.c_str());
+  const std::string epoch = m.epoch ? ", t = 0 at " + io::format_iso8601(*m.epoch) : std::string();
+  std::printf("wrote %s: %zu samples over %g s, %zu GPS fixes, %zu marks, %d mines%s\n", output.c_str(), m.size(),
+              m.time.back() - m.time.front(), m.gps_time.size(), m.mark_count(), m.mine_count, epoch.c_str());
 }
 
 int import_marks(std::span<const std::string> args) {
   po::options_description options("import marks options");
   options.add_options()
       ("marks", po::value<std::string>()->required(), "marks CSV: time,mine,range,side")
+      ("map", po::value<std::string>(), "column map (YAML) of the marks file: time, mine, range, side")
       ("into", po::value<std::string>()->required(), "mission file whose mark table is replaced")
       ("mines", po::value<std::string>(), "number of mines K (default: the mission's)")
       ("output,o", po::value<std::string>()->required(), "mission file to write");
   po::positional_options_description positional;
   positional.add("marks", 1);
   po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi import marks FILE.csv --into MISSION.h5 [--mines K] -o OUT.h5"))
+  if (!parse_options(args, options, positional, v, "gesmi import marks FILE.csv --into MISSION.h5 [--map MAP.yaml] [--mines K] -o OUT.h5"))
     return kExitOk;
   const std::string output = v["output"].as<std::string>();
-  io::OutputSet outputs(input_files(v, {"marks", "into"}));
+  io::OutputSet outputs(input_files(v, {"marks", "into", "map"}));
   outputs.check(output);
   const std::optional<int> mines = parse_mines(v);
   Mission m = io::read_mission(v["into"].as<std::string>());
-  io::import_marks(m, v["marks"].as<std::string>(), mines);
+  io::import_marks(m, v["marks"].as<std::string>(), mines, optional_path(v, "map"));
   io::write_mission(m, output);
   outputs.commit();
   print_summary(m, output);
@@ -71,8 +101,13 @@ int import_nav(std::span<const std::string> args) {
   po::options_description options("import nav options");
   options.add_options()
       ("nav", po::value<std::string>()->required(), "navigation CSV: time,roll,pitch,heading,vx,vy,vz,altitude,depth")
-      ("gps", po::value<std::string>(), "GPS CSV: time,longitude,latitude")
+      ("map", po::value<std::string>(), "column map (YAML) of a logger export: columns, units, time format (docs/formats.md)")
+      ("epoch", po::value<std::string>(), "UTC time of t = 0 for a log in seconds, like 2026-05-14T08:00:00Z")
+      ("gps", po::value<std::string>(), "GPS fixes: CSV time,longitude,latitude or NMEA 0183 (GGA, RMC)")
+      ("gps-format", po::value<std::string>()->default_value("detect"), "detect, csv or nmea")
+      ("date", po::value<std::string>(), "UTC date YYYY-MM-DD of an NMEA log's first fix, when it has no RMC")
       ("marks", po::value<std::string>(), "marks CSV: time,mine,range,side")
+      ("marks-map", po::value<std::string>(), "column map (YAML) of the marks file")
       ("origin", po::value<std::string>(), "local frame origin LAT,LON in degrees (default: the first GPS fix)")
       ("config", po::value<std::string>(), "sensor model YAML over the reference defaults")
       ("mines", po::value<std::string>(), "number of mines K (default: the rows of --truth-mines, else 0)")
@@ -83,24 +118,31 @@ int import_nav(std::span<const std::string> args) {
   positional.add("nav", 1);
   po::variables_map v;
   if (!parse_options(args, options, positional, v,
-                     "gesmi import nav FILE.csv [--gps GPS.csv] [--marks MARKS.csv] [--origin LAT,LON] "
+                     "gesmi import nav FILE.csv [--map MAP.yaml] [--epoch UTC] [--gps GPS.csv|GPS.nmea [--date YYYY-MM-DD]] "
+                     "[--marks MARKS.csv [--marks-map MAP.yaml]] [--origin LAT,LON] "
                      "[--config bounds.yaml] [--mines K] [--truth truth.csv] [--truth-mines truth_mines.csv] -o OUT.h5"))
     return kExitOk;
   const std::string output = v["output"].as<std::string>();
-  io::OutputSet outputs(input_files(v, {"nav", "gps", "marks", "config", "truth", "truth-mines"}));
+  io::OutputSet outputs(input_files(v, {"nav", "map", "gps", "marks", "marks-map", "config", "truth", "truth-mines"}));
   outputs.check(output);
   io::ImportInputs inputs;
+  inputs.map = optional_path(v, "map");
+  inputs.epoch = parse_epoch(v);
   inputs.gps = optional_path(v, "gps");
+  inputs.gps_format = parse_gps_format(v);
+  inputs.gps_date = parse_date(v);
   inputs.marks = optional_path(v, "marks");
+  inputs.marks_map = optional_path(v, "marks-map");
   inputs.config = optional_path(v, "config");
   inputs.truth = optional_path(v, "truth");
   inputs.truth_mines = optional_path(v, "truth-mines");
   if (v.count("origin")) inputs.origin = parse_origin(v["origin"].as<std::string>());
   inputs.mines = parse_mines(v);
-  const Mission m = io::import_nav(v["nav"].as<std::string>(), inputs);
+  std::vector<std::string> notes;
+  const Mission m = io::import_nav(v["nav"].as<std::string>(), inputs, &notes);
   io::write_mission(m, output);
   outputs.commit();
-  print_summary(m, output);
+  print_summary(m, output, notes);
   return kExitOk;
 }
 
