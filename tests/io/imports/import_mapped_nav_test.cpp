@@ -1,0 +1,150 @@
+// Logger exports through column maps (io/imports/column_map.h, import_mapped_nav.h):
+// layouts, units, the grid, channels between readings, gaps, and each refusal.
+#include "io/imports/import_mapped_nav.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "io/format_error.h"
+
+namespace gesmi::io {
+namespace {
+
+std::string write_map(const std::string& text) {
+  static int count = 0;
+  const std::string path = ::testing::TempDir() + "/map" + std::to_string(count++) + ".yaml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* kMap =
+    "time:     {column: t, format: seconds}\n"
+    "roll:     {column: r, unit: deg}\n"
+    "pitch:    {column: p, unit: deg}\n"
+    "heading:  {column: h, unit: deg}\n"
+    "vx:       {column: u, unit: knots}\n"
+    "vy:       {column: v}\n"
+    "vz:       {column: w}\n"
+    "altitude: {column: alt}\n"
+    "depth:    {column: z}\n";
+
+MappedNavLog read(const std::string& csv, const std::string& map_text = kMap) {
+  std::istringstream in(csv);
+  return read_mapped_nav(in, "log.csv", read_column_map(write_map(map_text), nav_map_schema(), true), SensorModel{},
+                         std::nullopt);
+}
+
+std::string error_of(const std::string& csv, const std::string& map_text = kMap) {
+  try {
+    read(csv, map_text);
+  } catch (const FormatError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(MappedNav, AnyOrderExtraColumnsUnitsAndTheDvlGrid) {
+  // Semicolons, detected; attitude every row, DVL every other row, depth on two rows.
+  const MappedNavLog log = read(
+      "status;z;h;t;u;v;w;alt;p;r;temp\n"
+      "ok;10;90;0.0;2;0;0;5;1;-1;12\n"
+      "ok;;91;0.1;;;;;1;-1;12\n"
+      "ok;;92;0.2;NaN;nan;;;1;-1;12\n"
+      "ok;;93;0.3;2;0;0;5;1;-1;12\n"
+      "ok;11;94;0.4;2;0;0;5;1;-1;12\n");
+  ASSERT_EQ(log.log.time, (std::vector<double>{0.0, 0.3, 0.4}));
+  EXPECT_NEAR(log.log.heading[0], 90.0 * std::numbers::pi / 180.0, 1e-15);
+  EXPECT_NEAR(log.log.vx[0], 2.0 * 1852.0 / 3600.0, 1e-15);
+  EXPECT_NEAR(log.log.roll[2], -std::numbers::pi / 180.0, 1e-15);
+  // Depth read at 0 and 0.4 only: half-widths everywhere, from the model where read.
+  const SensorModel model;
+  ASSERT_EQ(log.log.half_widths.depth.size(), 3u);
+  EXPECT_EQ(log.log.depth[0], 10.0);
+  EXPECT_GE(log.log.half_widths.depth[0], model.depth_absolute + model.depth_relative * 10.0);
+  // At 0.3: [10 ± 3.5] widened by 0.3 × 0.5, met with [11 ± 3.7] widened by 0.05.
+  const double lo = std::max(10.0 - 3.5 - 0.15, 11.0 - 3.7 - 0.05), hi = std::min(10.0 + 3.5 + 0.15, 11.0 + 3.7 + 0.05);
+  EXPECT_NEAR(log.log.depth[1] - log.log.half_widths.depth[1], lo, 1e-12);
+  EXPECT_NEAR(log.log.depth[1] + log.log.half_widths.depth[1], hi, 1e-12);
+  EXPECT_TRUE(log.log.half_widths.heading.empty());  // read on every grid row
+  // Converted channels: the model's bounds grow by the conversion's rounding.
+  EXPECT_GT(log.model.heading, model.heading);
+  EXPECT_LT(log.model.heading, model.heading + 1e-14);
+  EXPECT_GT(log.model.dvl_absolute, model.dvl_absolute);
+  EXPECT_EQ(log.model.altitude, model.altitude);
+  ASSERT_EQ(log.notes.size(), 2u);
+  EXPECT_NE(log.notes[1].find("depth at 1"), std::string::npos);
+}
+
+TEST(MappedNav, DelimitersDeclaredOrDetected) {
+  const std::string rows = "0 0 0 0 1 0 0 5 10\n1 0 0 0 1 0 0 5 10\n";
+  const std::string map = std::string(kMap) + "delimiter: whitespace\n";
+  EXPECT_EQ(read("t r p h u v w alt z\n" + rows, map).log.time.size(), 2u);
+  EXPECT_EQ(read("t\tr\tp\th\tu\tv\tw\talt\tz\n0\t0\t0\t0\t1\t0\t0\t5\t10\n1\t0\t0\t0\t1\t0\t0\t5\t10\n").log.time.size(), 2u);
+  EXPECT_EQ(read("t,r,p,h,u,v,w,alt,z\n0,0,0,0,1,0,0,5,10\n1,0,0,0,1,0,0,5,10\n").log.time.size(), 2u);
+}
+
+TEST(MappedNav, AbsoluteTimesSetTheEpochAtTheFirstWholeSecond) {
+  const std::string map = std::string(kMap).replace(0, std::string(kMap).find('\n'), "time: {column: t, format: iso8601}");
+  const MappedNavLog log = read(
+      "t,r,p,h,u,v,w,alt,z\n"
+      "2026-05-14T10:00:00.5+02:00,0,0,0,1,0,0,5,10\n"
+      "2026-05-14T08:00:01.75Z,0,0,0,1,0,0,5,10\n", map);
+  ASSERT_TRUE(log.epoch);
+  EXPECT_EQ(*log.epoch, 1778745600);  // 2026-05-14T08:00:00Z
+  EXPECT_EQ(log.log.time, (std::vector<double>{0.5, 1.75}));
+}
+
+TEST(MappedNav, GapsBeyondTheLimitAndSilentChannelsAreRefused) {
+  std::string csv = "t,r,p,h,u,v,w,alt,z\n";
+  for (int k = 0; k <= 100; ++k) {
+    const bool dvl = k < 40 || k > 75;  // 35 s without DVL
+    csv += std::to_string(k) + ",0,0,0," + (dvl ? "1,0,0,5" : ",,,") + "," + (k % 10 == 0 ? "10" : "") + "\n";
+  }
+  EXPECT_EQ(read(csv).log.time.size(), 65u);
+  const std::string gap = error_of(csv, std::string(kMap) + "max_gap: 30\n");
+  EXPECT_NE(gap.find("log.csv:78: vx: no reading for 37 s (from 39 s to 76 s), beyond the 30 s limit (max_gap in"), std::string::npos)
+      << gap;
+  std::string slow_depth = "t,r,p,h,u,v,w,alt,z\n";
+  for (int k = 0; k <= 30; ++k) slow_depth += std::to_string(k) + ",0,0,0,1,0,0,5," + (k % 10 == 0 ? "10" : "") + "\n";
+  const std::string depth = error_of(slow_depth, std::string(kMap) + "max_gap: 5\n");
+  EXPECT_NE(depth.find("depth: no reading for 10 s"), std::string::npos) << depth;
+  std::string silent = "t,r,p,h,u,v,w,alt,z\n0,0,0,0,1,0,0,5,\n1,0,0,0,1,0,0,5,\n";
+  EXPECT_NE(error_of(silent).find("log.csv: depth: no reading in the file (column 'z')"), std::string::npos);
+}
+
+TEST(MappedNav, RowsAndMapsThatCannotBeReadAreRefusedPrecisely) {
+  const std::string header = "t,r,p,h,u,v,w,alt,z\n";
+  EXPECT_NE(error_of(header + "0,0,0,0,1,,0,5,10\n").find("log.csv:2: v: missing: a DVL reading needs vx, vy and vz"),
+            std::string::npos);
+  EXPECT_NE(error_of(header + "0,100,0,0,1,0,0,5,10\n1,0,0,0,1,0,0,5,10\n").find("r: 1.7"), std::string::npos);
+  EXPECT_NE(error_of(header + "1,0,0,0,1,0,0,5,10\n0,0,0,0,1,0,0,5,10\n").find("log.csv:3: t: goes back in time"),
+            std::string::npos);
+  EXPECT_NE(error_of(header + "0,0,0,0,1,0,0,5,10\n0,0,0,0,1,0,0,5,10\n").find("a second DVL reading"), std::string::npos);
+  EXPECT_NE(error_of(header + "0,0,0,0,inf,0,0,5,10\n").find("u: is infinite"), std::string::npos);
+  EXPECT_NE(error_of(header + "0,0,0,0,1,0,0,5,10\n").find("at least 2 rows with a DVL reading"), std::string::npos);
+  const std::string missing = error_of("t,r,p,h,u,v,w,alt\n0,0,0,0,1,0,0,5\n");
+  EXPECT_NE(missing.find("log.csv:1: header: no column 'z'"), std::string::npos) << missing;
+  EXPECT_NE(missing.find(".yaml:9: depth.column names it"), std::string::npos) << missing;
+  const auto map_error = [&](const std::string& map) { return error_of(header + "0,0,0,0,1,0,0,5,10\n", map); };
+  std::string no_unit = kMap;
+  no_unit.replace(no_unit.find(", unit: deg}\npitch"), 12, "}");
+  EXPECT_NE(map_error(no_unit).find(":2: roll.unit: missing: say rad or deg"), std::string::npos) << map_error(no_unit);
+  std::string grad = kMap;
+  grad.replace(grad.find("unit: deg}\npitch"), 9, "unit: grad");
+  EXPECT_NE(map_error(grad).find("roll.unit: unknown unit 'grad' (expected rad or deg)"), std::string::npos) << map_error(grad);
+  EXPECT_NE(map_error(std::string(kMap) + "speed: {column: s}\n").find(":10: speed: unknown key"), std::string::npos);
+  EXPECT_NE(map_error(std::string(kMap) + "delimiter: '|'\n").find("delimiter: expected"), std::string::npos);
+  std::string no_depth = kMap;
+  no_depth.erase(no_depth.find("depth:"));
+  EXPECT_NE(map_error(no_depth).find("depth: missing"), std::string::npos);
+  std::string bad_format = kMap;
+  bad_format.replace(bad_format.find("seconds"), 7, "julian");
+  EXPECT_NE(map_error(bad_format).find("time.format: expected iso8601, epoch or seconds, found 'julian'"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace gesmi::io
