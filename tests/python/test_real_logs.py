@@ -125,10 +125,9 @@ def check_solution(out_h5, sim, grid):
 # The simulated mission, its logger exports
 
 
-@pytest.fixture(scope="session")
-def sim(tmp_path_factory):
+def simulate(tmp_path_factory, errors):
     path = str(tmp_path_factory.mktemp("sim") / "m.h5")
-    r = run_gesmi("simulate", "--seed", "11", "--duration", "600", "-o", path)
+    r = run_gesmi("simulate", "--seed", "11", "--duration", "600", "--errors", errors, "-o", path)
     assert r.returncode == 0, r.stderr
     with h5py.File(path, "r") as f:
         s = types.SimpleNamespace(
@@ -154,7 +153,21 @@ def sim(tmp_path_factory):
     # Samples at 10 Hz: row k is k tenths of a second after t = 0 (the logs below rely on it).
     np.testing.assert_allclose(s.time, np.arange(n) / 10.0, rtol=0, atol=1e-9)
     assert len(s.gps_time) >= 2 and len(s.mark_time) >= 1 and len(s.mines) == 6
+    # The heading crosses north: a log writing it in [0, 360) wraps between readings.
+    assert s.attitude[:, 2].min() < 0.0 < s.attitude[:, 2].max()
     return s
+
+
+@pytest.fixture(scope="session")
+def sim(tmp_path_factory):
+    """A ten-minute simulated mission, sensor errors drawn uniformly within the bounds."""
+    return simulate(tmp_path_factory, "uniform")
+
+
+@pytest.fixture(scope="session", params=["uniform", "worst-case"])
+def any_sim(request, sim, tmp_path_factory):
+    """The mission above, and the same one with every error at the end of its bound."""
+    return sim if request.param == "uniform" else simulate(tmp_path_factory, "worst-case")
 
 
 def export_logger(sim, folder, *extra):
@@ -325,7 +338,7 @@ class LogLayout:
     def __init__(self, sim, *, rows=None, delimiter=",", map_delimiter=None, time_format="seconds",
                  epoch=DEFAULT_EPOCH, offset="Z", map_timezone=None, angle_unit="rad", speed_unit="m/s",
                  dvl=None, attitude=None, depth=None, altitude=None, names=None, order=None, extra=None,
-                 absent="", shuffle_seed=None):
+                 absent="", shuffle_seed=None, heading_0_360=False):
         n = len(sim.time)
         self.sim = sim
         self.rows = list(range(n)) if rows is None else list(rows)
@@ -351,6 +364,7 @@ class LogLayout:
             np.random.default_rng(shuffle_seed).shuffle(columns)
         self.columns = columns
         self.absent = absent
+        self.heading_0_360 = heading_0_360
         self.map_lines = {}
 
     # Values as written and as read ------------------------------------------------
@@ -382,6 +396,11 @@ class LogLayout:
     def angle(self, x):
         return repr(math.degrees(x)) if self.angle_unit == "deg" else repr(float(x))
 
+    def heading(self, x):
+        if not self.heading_0_360:
+            return self.angle(x)
+        return repr(math.degrees(x) % 360.0) if self.angle_unit == "deg" else repr(float(x) % (2 * math.pi))
+
     def speed(self, v):
         return repr(v / KNOT) if self.speed_unit == "knots" else repr(float(v))
 
@@ -394,7 +413,7 @@ class LogLayout:
             "time": self.time_text(k),
             "roll": self.angle(roll) if a else self.absent,
             "pitch": self.angle(pitch) if a else self.absent,
-            "heading": self.angle(heading) if a else self.absent,
+            "heading": self.heading(heading) if a else self.absent,
             "vx": self.speed(vx) if v else self.absent,
             "vy": self.speed(vy) if v else self.absent,
             "vz": self.speed(vz) if v else self.absent,
@@ -509,9 +528,10 @@ LAYOUTS = {
         extra={"vehicle": "AUV-3 survey", "mode": lambda k: "TRACK" if k % 50 else "FIX", "seq": lambda k: str(k)},
         dvl=lambda k: k % 2 == 0, depth=lambda k: k % 5 == 0),
     # (b) tab-separated, ISO 8601 local times with a +02:00 offset.
+    # The first row 0.7 s after a whole second: t = 0 is that second.
     "tab_iso_plus_two_hours": dict(
         delimiter="\t", map_delimiter="tab", time_format="iso", offset="+02:00", angle_unit="deg",
-        names={"time": "Local time"}, extra={"note": "-"}, dvl=lambda k: k % 2 == 0),
+        names={"time": "Local time"}, extra={"note": "-"}, dvl=lambda k: k % 2 == 0, rows=range(7, 6001)),
     # (b') the same offset given by the map for times written without a zone.
     "tab_iso_zone_from_map": dict(
         delimiter="\t", map_delimiter='"\\t"', time_format="iso", offset="", map_timezone="+02:00",
@@ -524,6 +544,10 @@ LAYOUTS = {
     "multirate_attitude_off_grid": dict(
         delimiter=";", time_format="epoch", angle_unit="deg",
         dvl=lambda k: k % 3 == 0, attitude=lambda k: k % 3 != 0, depth=lambda k: k % 20 == 0),
+    # (d') the same with the heading written in [0, 360) degrees: it wraps at north.
+    "multirate_heading_0_360": dict(
+        delimiter=";", time_format="epoch", angle_unit="deg", heading_0_360=True,
+        dvl=lambda k: k % 3 == 0, attitude=lambda k: k % 3 != 0, depth=lambda k: k % 20 == 0),
     # (e) a 30 s DVL gap (altitude with it), ISO 8601 UTC.
     "dvl_gap_30s": dict(
         delimiter=",", time_format="iso", offset="Z", angle_unit="deg",
@@ -532,7 +556,8 @@ LAYOUTS = {
 
 
 @pytest.mark.parametrize("name", sorted(LAYOUTS))
-def test_own_log_layouts_import_and_hold_the_truth(sim, tmp_path, name):
+def test_own_log_layouts_import_and_hold_the_truth(any_sim, tmp_path, name):
+    sim = any_sim
     layout = LogLayout(sim, **LAYOUTS[name])
     r, out = import_layout(layout, tmp_path)
     assert r.returncode == 0, r.stderr
@@ -572,17 +597,30 @@ def test_own_log_layouts_import_and_hold_the_truth(sim, tmp_path, name):
     check_solution(out, sim, grid)
 
 
-def test_knots_and_degrees_are_converted_to_si(sim, tmp_path):
-    """The imported readings are the simulated ones, within the conversion's rounding."""
+def test_knots_and_degrees_are_converted_to_si(sim, logger, tmp_path):
+    """The imported readings are the simulated ones, within the conversion's rounding; a
+    log in seconds placed by --epoch takes the NMEA fixes of its span."""
     layout = LogLayout(sim, rows=range(0, 1201), angle_unit="deg", speed_unit="knots", dvl=lambda k: k % 2 == 0)
-    r, out = import_layout(layout, tmp_path, "--epoch", "2026-05-14T08:00:00Z")
+    log, map_, truth = (str(tmp_path / n) for n in ("log.csv", "map.yaml", "truth.csv"))
+    layout.write_log(log)
+    layout.write_map(map_)
+    layout.write_truth(truth)
+    out = str(tmp_path / "out.h5")
+    r = run_gesmi("import", "nav", log, "--map", map_, "--epoch", iso_z(DEFAULT_EPOCH),
+                  "--gps", os.path.join(logger, "gps.nmea"), "--truth", truth, "-o", out)
     assert r.returncode == 0, r.stderr
+    inside = [t for t in sim.gps_time if t <= 120.0]
+    assert nmea_counts(r.stdout) == (len(inside), 0, 0, len(sim.gps_time) - len(inside))
     m = gesmi.read_mission(out)
     grid = layout.grid
     np.testing.assert_allclose(m.roll, sim.attitude[grid, 0], rtol=1e-14, atol=1e-18)
     np.testing.assert_allclose(m.heading, sim.attitude[grid, 2], rtol=1e-14, atol=1e-18)
     np.testing.assert_allclose(m.vx, sim.velocity[grid, 0], rtol=1e-14, atol=1e-18)
     np.testing.assert_allclose(m.vy, sim.velocity[grid, 1], rtol=1e-14, atol=1e-18)
+    np.testing.assert_allclose(m.gps_time, inside, rtol=0, atol=1e-3)
+    # The first fix is the origin when --origin is not given.
+    assert m.origin[0] == pytest.approx(sim.gps_lonlat[0, 1], abs=1e-7)
+    assert m.origin[1] == pytest.approx(sim.gps_lonlat[0, 0], abs=1e-7)
     # --epoch names t = 0 of a log in seconds.
     assert summary_line(r.stdout).endswith("t = 0 at 2026-05-14T08:00:00Z")
 
@@ -694,6 +732,12 @@ def test_nmea_midnight_crossing_takes_the_next_day(sim, midnight_logger, tmp_pat
     assert nmea_counts(r.stdout) == (2, 0, 0, 0)
     m = gesmi.read_mission(out)
     np.testing.assert_allclose(m.gps_time, [240.5, 330.25], rtol=0, atol=1e-9)
+    # A GGA before midnight whose only RMC comes after it (dated the next day): its own day.
+    (tmp_path / "rmc_after").mkdir()
+    lines_after = [gga(before, lat, lon), rmc(after, lat + 1e-4, lon), gga(after, lat + 1e-4, lon)]
+    r, out, _ = nmea_import(midnight_logger, tmp_path / "rmc_after", lines_after, "--origin", "%r,%r" % sim.origin)
+    assert r.returncode == 0, r.stderr
+    np.testing.assert_allclose(gesmi.read_mission(out).gps_time, [240.5, 330.25], rtol=0, atol=1e-9)
     # GGA only, --date the day of the first fix: the time of day falling back is the next day.
     (tmp_path / "gga").mkdir()
     r, out, _ = nmea_import(midnight_logger, tmp_path / "gga", lines[1:], "--origin", "%r,%r" % sim.origin,
@@ -711,10 +755,13 @@ def test_nmea_fixes_outside_the_navigation_are_skipped_and_counted(sim, logger, 
         t = DEFAULT_EPOCH + datetime.timedelta(seconds=s)
         lines += [rmc(t, lat, lon), gga(t, lat, lon)]
     lines.insert(0, sentence("GPGSA,A,3,04,05,,09,12,,,24,,,,,2.5,1.3,2.1"))
+    # The fix at 42 s again from a second receiver (GN talker): a repeat, not a second fix.
+    lines.insert(7, "$GN" + lines[6][3:lines[6].rindex("*")] + "*" + nmea_checksum("GN" + lines[6][3:lines[6].rindex("*")]))
+    assert pynmea2.parse(lines[7], check=True).talker == "GN"
     r, out, _ = nmea_import(logger, tmp_path, lines, "--origin", "%r,%r" % sim.origin)
     assert r.returncode == 0, r.stderr
     assert nmea_counts(r.stdout) == (1, 0, 0, 4)
-    assert "1 other sentences ignored" in r.stdout
+    assert "4 fixes outside the navigation's time span, 1 repeated; 1 other sentences ignored" in r.stdout, r.stdout
     m = gesmi.read_mission(out)
     np.testing.assert_allclose(m.gps_time, [42.0], rtol=0, atol=1e-9)
     assert m.gps_latitude[0] == pytest.approx(positions[2][0], abs=1e-8)
@@ -800,7 +847,8 @@ def test_map_names_a_column_the_file_lacks(sim, tmp_path):
 def test_dvl_gap_beyond_max_gap(sim, tmp_path):
     gap_layout = short_layout(sim, dvl=lambda k: k % 2 == 0 and not (400 <= k <= 700))
     message, log, map_ = run_bad(gap_layout, tmp_path, map_kwargs={"max_gap": 20})
-    assert log in message and "max_gap" in message and map_ in message, message
+    assert "%s:%d: vx: " % (log, 702 + 2) in message, message  # the reading after the gap
+    assert "max_gap" in message and map_ in message, message
     assert "20 s" in message and "%s s" % seconds_text(70.2 - 39.8) in message, message
     # The same log within the default 60 s limit imports.
     (tmp_path / "ok").mkdir()
@@ -815,7 +863,43 @@ def test_dvl_gap_beyond_max_gap(sim, tmp_path):
 def test_depth_silent_beyond_max_gap(sim, tmp_path):
     message, log, _ = run_bad(short_layout(sim, depth=lambda k: k in (0, 500, 1200)), tmp_path,
                               map_kwargs={"max_gap": 45})
-    assert log in message and "depth" in message and "max_gap" in message, message
+    assert "%s:%d: depth: " % (log, 500 + 2) in message and "max_gap" in message, message
+    assert "50 s" in message and "45 s" in message, message
+
+
+def test_a_dvl_reading_without_all_three_components(sim, tmp_path):
+    row = 88
+
+    def edit(k, values):
+        if k == row:
+            values["vy"] = ""
+
+    message, log, _ = run_bad(short_layout(sim), tmp_path, edit=edit)
+    assert "%s:%d: vy: " % (log, row + 2) in message and "vx, vy and vz" in message, message
+
+
+def test_time_going_back(sim, tmp_path):
+    row = 250
+
+    def edit(k, values):
+        if k == row:
+            values["time"] = "2026-05-14T07:59:59.000Z"
+
+    message, log, _ = run_bad(short_layout(sim), tmp_path, edit=edit)
+    assert "%s:%d: time: " % (log, row + 2) in message and "back in time" in message, message
+
+
+def test_nmea_fixes_need_a_navigation_with_utc_times(sim, logger, tmp_path):
+    layout = short_layout(sim, time_format="seconds")
+    log, map_ = str(tmp_path / "log.csv"), str(tmp_path / "map.yaml")
+    layout.write_log(log)
+    layout.write_map(map_)
+    nmea, out = os.path.join(logger, "gps.nmea"), str(tmp_path / "out.h5")
+    r = run_gesmi("import", "nav", log, "--map", map_, "--gps", nmea, "-o", out)
+    assert r.returncode == 2, r.stdout
+    assert len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert nmea in r.stderr and "--epoch" in r.stderr, r.stderr
+    assert not os.path.exists(out)
 
 
 def test_a_channel_with_no_reading(sim, tmp_path):
@@ -879,3 +963,32 @@ def test_marks_with_absolute_times_need_the_missions_epoch(sim, logger, reimport
     order, expected = np.argsort(m.mark_time), np.argsort(sim.mark_time)
     np.testing.assert_allclose(np.asarray(m.mark_time)[order], sim.mark_time[expected], rtol=0, atol=1e-6)
     np.testing.assert_array_equal(np.asarray(m.mark_mine)[order], sim.mark_mine[expected])
+
+
+# ----------------------------------------------------------------------------------------
+# Found while writing these tests (strict xfail: a fix makes them pass, and fail here)
+
+
+@pytest.mark.xfail(strict=True, reason="gesmi export --format logger --epoch drops the fraction of the epoch silently "
+                   "(cmd_export.cpp keeps parsed.time->seconds), where import nav --epoch refuses one")
+def test_export_epoch_with_a_fraction_is_refused_or_kept(sim, tmp_path):
+    folder = str(tmp_path / "out")
+    r = run_gesmi("export", sim.path, "--format", "logger", "--epoch", "2026-05-14T08:00:00.5Z", "-o", folder)
+    if r.returncode == 0:
+        _, rows = read_semicolon_log(os.path.join(folder, "log.csv"))
+        assert rows[0][0] == "2026-05-14T08:00:00.500000Z"
+    else:
+        assert r.returncode == 2 and "--epoch" in r.stderr
+        assert not os.path.exists(folder) or os.listdir(folder) == []
+
+
+@pytest.mark.xfail(strict=True, reason="gesmi import marks --map: the error for absolute times in a mission without "
+                   "epoch says 'or give --epoch', an option gesmi import marks does not have")
+def test_marks_epoch_error_suggests_an_option_the_command_has(sim, logger, tmp_path):
+    marks, marks_map = os.path.join(logger, "marks.csv"), os.path.join(logger, "marks_map.yaml")
+    out = str(tmp_path / "marked.h5")
+    r = run_gesmi("import", "marks", marks, "--into", sim.path, "--map", marks_map, "-o", out)
+    assert r.returncode == 2
+    help_text = run_gesmi("import", "marks", "--help").stdout
+    for option in re.findall(r"(--[a-z][a-z-]*)", r.stderr):
+        assert option in help_text, (option, r.stderr)
