@@ -6,7 +6,10 @@
 #include "io/output/atomic_output.h"
 #include "io/imports/csv_number.h"
 #include "io/format_error.h"
+#include "io/files/mission_digest.h"
+#include "io/io_version.h"
 #include "io/files/model_attributes.h"
+#include "io/time/utc_time.h"
 #include "io/hdf5/h5_digest.h"
 #include "io/hdf5/h5_file.h"
 #include "io/hdf5/h5_format.h"
@@ -17,8 +20,9 @@ namespace {
 
 constexpr const char* kFormat = "gesmi-result";
 // 1: before digests (no format_version attribute); 2: per-dataset and root SHA-256;
-// 3: the waterfall stored as its feasible cells only.
-constexpr H5FormatVersions kVersions{.current = 3, .oldest = 1, .when_absent = 1};
+// 3: the waterfall stored as its feasible cells only; 4: the model keys of mission
+// format 3 (max_depth_rate, max_altitude_rate) and the mission's epoch_utc.
+constexpr H5FormatVersions kVersions{.current = 4, .oldest = 1, .when_absent = 1};
 
 // Every dataset of a result, in the order the root digest lists them (format 3;
 // format 2 has no /waterfall/step and /waterfall/mine, its waterfall being dense).
@@ -46,9 +50,11 @@ std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& 
           {"marks_sha256", r.marks_digest},
           {"mark_count", std::to_string(s.mark_count())},
           {"gesmi_version", r.version}};
-  // The /model attributes, exactly (shortest round-trip text).
+  if (r.epoch) fields.emplace_back("epoch_utc", format_iso8601(*r.epoch));
+  // The /model attributes, exactly (shortest round-trip text): those the file's format has.
+  const int model_version = r.format_version >= 4 ? 3 : 2;
   for (const SensorModelField& f : sensor_model_fields())
-    fields.emplace_back("/model/" + std::string(f.key), format_number(s.model.*f.member));
+    if (f.since_version <= model_version) fields.emplace_back("/model/" + std::string(f.key), format_number(s.model.*f.member));
   for (const SensorModelChoice& c : sensor_model_choices())
     fields.emplace_back("/model/" + std::string(c.key), std::string(c.get(s.model)));
   return fields;
@@ -156,6 +162,14 @@ void read_waterfall_cells(const H5File& f, std::size_t n, std::size_t k, Waterfa
 
 }  // namespace
 
+void record_inputs(SolveResult& r, const Mission& mission, std::string navigation) {
+  r.navigation_digest = navigation.empty() ? navigation_digest(mission) : std::move(navigation);
+  r.bounds_digest = bounds_digest(mission.model);
+  r.marks_digest = marks_digest(mission, r.solution.mark_count());
+  r.version = std::string(version());
+  r.epoch = mission.epoch;
+}
+
 void write_result(const SolveResult& r, const std::string& path) {
   const MissionSolution& s = r.solution;
   AtomicOutput out(path);
@@ -203,6 +217,7 @@ void write_result(const SolveResult& r, const std::string& path) {
     f.set_attribute("/", "marks_sha256", r.marks_digest);
     f.set_attribute("/", "mark_count", static_cast<std::int64_t>(s.mark_count()));
     f.set_attribute("/", "gesmi_version", r.version);
+    if (r.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*r.epoch));
     for (const auto& [name, ms] : s.timings_ms) f.set_attribute("/", "timing_" + name + "_ms", ms);
     std::vector<std::pair<std::string, std::string>> digested = fields;
     for (const char* dataset : kDatasets) digested.emplace_back(dataset, *f.string_attribute(dataset, "sha256"));
@@ -241,6 +256,12 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
   s.mine_count = static_cast<int>(integer("mine_count", 0, kMaxMines));
   const std::int64_t mark_count = integer("mark_count", 0, static_cast<std::int64_t>(kMaxDatasetValues));
   r.version = text("gesmi_version");
+  if (const auto epoch = f.string_attribute("/", "epoch_utc")) {
+    const ParsedTime parsed = parse_iso8601(*epoch);
+    if (!parsed.time || parsed.time->fraction != 0.0 || r.format_version < 4)
+      bad(f, "/", "attribute epoch_utc is not a UTC time YYYY-MM-DDThh:mm:ssZ of a format-4 result");
+    r.epoch = parsed.time->seconds;
+  }
   if (verified) {
     s.model = read_model_attributes(f, "/model", 2);
     const std::string mode = text("mode");

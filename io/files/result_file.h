@@ -10,9 +10,11 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "solver/mission/mission.h"
 #include "solver/solve/mission_solution.h"
 
 namespace gesmi::io {
@@ -22,9 +24,10 @@ struct SolveResult {
   MissionSolution solution;
   std::string navigation_digest, bounds_digest, marks_digest;  // SHA-256 of the inputs (io/files/mission_digest.h)
   std::string version;  // gesmi that wrote it
+  std::optional<std::int64_t> epoch;  // the mission's UTC epoch of t = 0, when it has one
   /// Layout of the file read: 1 for results written before digests existed (readable,
-  /// but unfit for a warm start), 2 today.
-  std::int64_t format_version = 2;
+  /// but unfit for a warm start), 2 and 3 with digests, 4 today (what it is written as).
+  std::int64_t format_version = 4;
 };
 
 /// The parts of a result a reader needs besides its attributes, times, mine boxes and
@@ -34,6 +37,11 @@ struct ResultParts {
   bool tube = true;  // the tube and the increments (warm starts, exports)
   bool waterfall = true;
 };
+
+/// Records in `result` what it was computed from: the digests of the mission's
+/// navigation (`navigation_digest`, computed when empty), bounds and marks, the gesmi
+/// version and the mission's epoch.
+void record_inputs(SolveResult& result, const Mission& mission, std::string navigation_digest = {});
 
 void write_result(const SolveResult& result, const std::string& path);
 /// Reads a result; FormatError naming the file and dataset when it is not a valid

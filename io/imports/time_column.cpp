@@ -16,7 +16,7 @@ double TimeColumn::read(const CsvReader& csv, std::size_t column) {
   if (!parsed.time) csv.fail(column, parsed.error + ", found " + quoted_input(text));
   if (!epoch_) {
     if (!may_set_epoch_)
-      csv.fail(column, "an absolute time needs the mission's epoch: import the navigation with absolute times, or give --epoch");
+      csv.fail(column, "an absolute time needs the mission's epoch, which it has not: import its navigation with absolute times, or with its epoch given");
     epoch_ = parsed.time->seconds;
   }
   return parsed.time->since(*epoch_);

@@ -314,7 +314,47 @@ def test_logger_export_of_a_log_across_midnight(sim, midnight_logger, tmp_path):
     m = gesmi.read_mission(os.path.join(folder, command[command.index("-o") + 1]))
     # The fix after midnight is dated on the next day by its RMC: at its own time.
     np.testing.assert_allclose(m.gps_time, sim.gps_time, rtol=0, atol=1e-3)
-    assert len(m) == len(expected_logger_grid(sim, 2))
+    check_solution(os.path.join(folder, command[command.index("-o") + 1]), sim, expected_logger_grid(sim, 2))
+
+
+def test_the_epoch_is_stored_and_passed_on_by_the_csv_export(reimported, tmp_path):
+    assert reimported.result.returncode == 0, reimported.result.stderr
+    with h5py.File(reimported.out, "r") as f:
+        stored = f.attrs["epoch_utc"]
+    assert (stored.decode() if isinstance(stored, bytes) else stored) == iso_z(DEFAULT_EPOCH)
+    folder = str(tmp_path / "csv")
+    r = run_gesmi("export", reimported.out, "-o", folder)
+    assert r.returncode == 0, r.stderr
+    with open(os.path.join(folder, "import-command.txt")) as f:
+        command = shlex.split(f.read())
+    r = subprocess.run([gesmi_path(), *command[1:]], capture_output=True, text=True, cwd=folder)
+    assert r.returncode == 0, r.stderr
+    assert summary_line(r.stdout).endswith("t = 0 at " + iso_z(DEFAULT_EPOCH))
+    first, again = gesmi.read_mission(reimported.out), gesmi.read_mission(os.path.join(folder, "mission.h5"))
+    np.testing.assert_array_equal(again.time, first.time)
+    np.testing.assert_array_equal(again.gps_time, first.gps_time)
+
+
+@pytest.mark.parametrize("options", [
+    ("--dvl-gap", "0:10"),  # no DVL at the start: t = 0 is still the first row's second
+    ("--dvl-gap", "590:600"),  # nor at the end: the last fix falls outside the grid
+    ("--dvl-every", "7", "--depth-every", "13"),  # the last row keeps its DVL reading
+], ids=["gap_at_start", "gap_at_end", "every_7th"])
+def test_logger_export_options_reimport(sim, tmp_path, options):
+    folder = export_logger(sim, tmp_path / "out", *options)
+    with open(os.path.join(folder, "import-command.txt")) as f:
+        command = shlex.split(f.read())
+    r = subprocess.run([gesmi_path(), *command[1:]], capture_output=True, text=True, cwd=folder)
+    assert r.returncode == 0, r.stderr
+    every = int(options[1]) if options[0] == "--dvl-every" else 2
+    gap = tuple(float(x) for x in options[1].split(":")) if options[0] == "--dvl-gap" else None
+    grid = expected_logger_grid(sim, every, gap)
+    t0, t1 = sim.time[grid[0]], sim.time[grid[-1]]
+    inside = sum(1 for t in sim.gps_time if t0 - 1e-6 <= t <= t1 + 1e-6)
+    assert nmea_counts(r.stdout) == (inside, 0, 0, len(sim.gps_time) - inside)
+    assert summary_line(r.stdout).endswith("t = 0 at " + iso_z(DEFAULT_EPOCH))
+    m, _ = check_solution(os.path.join(folder, command[command.index("-o") + 1]), sim, grid)
+    np.testing.assert_allclose(m.time, sim.time[grid], rtol=0, atol=1e-6)
 
 
 # ----------------------------------------------------------------------------------------
@@ -505,18 +545,10 @@ def import_layout(layout, folder, *extra_args, map_kwargs=None):
     aux = layout.write_aux(folder)
     out = os.path.join(folder, "mission.h5")
     r = run_gesmi("import", "nav", log, "--map", map_, "--gps", aux["gps.csv"], "--marks", aux["marks.csv"],
-                  "--config", aux["model.yaml"], "--origin", "%r,%r" % sim_origin(layout.sim), "--mines",
+                  "--config", aux["model.yaml"], "--origin", "%r,%r" % layout.sim.origin, "--mines",
                   str(len(layout.sim.mines)), "--truth", truth, "--truth-mines", aux["truth_mines.csv"], "-o", out,
                   *extra_args)
     return r, out
-
-
-def sim_origin(sim):
-    return sim.origin
-
-
-def in_gap(sim, k, gap):
-    return gap[0] <= sim.time[k] <= gap[1]
 
 
 LAYOUTS = {
@@ -532,6 +564,10 @@ LAYOUTS = {
     "tab_iso_plus_two_hours": dict(
         delimiter="\t", map_delimiter="tab", time_format="iso", offset="+02:00", angle_unit="deg",
         names={"time": "Local time"}, extra={"note": "-"}, dvl=lambda k: k % 2 == 0, rows=range(7, 6001)),
+    # (b'') a negative offset; the local date changes at 00:00-05:30 during the log.
+    "comma_iso_minus_0530_local_midnight": dict(
+        delimiter=",", time_format="iso", offset="-05:30", angle_unit="deg",
+        epoch=datetime.datetime(2026, 5, 15, 5, 25, 0, tzinfo=UTC), dvl=lambda k: k % 2 == 0),
     # (b') the same offset given by the map for times written without a zone.
     "tab_iso_zone_from_map": dict(
         delimiter="\t", map_delimiter='"\\t"', time_format="iso", offset="", map_timezone="+02:00",
@@ -779,15 +815,13 @@ def short_layout(sim, **kwargs):
     return LogLayout(sim, **options)
 
 
-def run_bad(layout, folder, *, edit=None, map_kwargs=None, map_text=None, existing_output=False):
+def run_bad(layout, folder, *, edit=None, map_kwargs=None, existing_output=False):
+    """Imports a log that must be refused: exit 2, one line on stderr, no output (or an
+    existing one untouched). Returns the message and the log's and map's paths."""
     folder = str(folder)
     log, map_ = os.path.join(folder, "log.csv"), os.path.join(folder, "map.yaml")
     layout.write_log(log, edit)
-    if map_text is None:
-        layout.write_map(map_, **(map_kwargs or {}))
-    else:
-        with open(map_, "w") as f:
-            f.write(map_text)
+    layout.write_map(map_, **(map_kwargs or {}))
     out = os.path.join(folder, "out.h5")
     if existing_output:
         with open(out, "wb") as f:
@@ -966,11 +1000,9 @@ def test_marks_with_absolute_times_need_the_missions_epoch(sim, logger, reimport
 
 
 # ----------------------------------------------------------------------------------------
-# Found while writing these tests (strict xfail: a fix makes them pass, and fail here)
+# Found while writing these tests, and fixed
 
 
-@pytest.mark.xfail(strict=True, reason="gesmi export --format logger --epoch drops the fraction of the epoch silently "
-                   "(cmd_export.cpp keeps parsed.time->seconds), where import nav --epoch refuses one")
 def test_export_epoch_with_a_fraction_is_refused_or_kept(sim, tmp_path):
     folder = str(tmp_path / "out")
     r = run_gesmi("export", sim.path, "--format", "logger", "--epoch", "2026-05-14T08:00:00.5Z", "-o", folder)
@@ -982,8 +1014,6 @@ def test_export_epoch_with_a_fraction_is_refused_or_kept(sim, tmp_path):
         assert not os.path.exists(folder) or os.listdir(folder) == []
 
 
-@pytest.mark.xfail(strict=True, reason="gesmi import marks --map: the error for absolute times in a mission without "
-                   "epoch says 'or give --epoch', an option gesmi import marks does not have")
 def test_marks_epoch_error_suggests_an_option_the_command_has(sim, logger, tmp_path):
     marks, marks_map = os.path.join(logger, "marks.csv"), os.path.join(logger, "marks_map.yaml")
     out = str(tmp_path / "marked.h5")

@@ -28,7 +28,7 @@ int run_export(std::span<const std::string> args) {
       ("format", po::value<std::string>()->default_value("csv"),
        "csv (a folder of CSV files), logger (a folder: multi-rate log, map, NMEA, marks) or gesmi-txt (one file)")
       ("output,o", po::value<std::string>()->required(), "folder to create (csv, logger) or file to write (gesmi-txt)")
-      ("epoch", po::value<std::string>(), "logger: UTC time of t = 0 (default: the mission's, else 2026-05-14T08:00:00Z)")
+      ("epoch", po::value<std::string>(), "logger: UTC time of t = 0, whole seconds (default: the mission's, else 2026-05-14T08:00:00Z)")
       ("dvl-every", po::value<std::string>()->default_value("2"), "logger: a DVL reading every N samples")
       ("depth-every", po::value<std::string>()->default_value("10"), "logger: a depth reading every N samples")
       ("dvl-gap", po::value<std::string>(), "logger: no DVL reading from FROM to TO s (FROM:TO)");
@@ -61,6 +61,7 @@ int run_export(std::span<const std::string> args) {
     if (v.count("epoch")) {
       const io::ParsedTime parsed = io::parse_iso8601(v["epoch"].as<std::string>());
       if (!parsed.time) throw UsageError("--epoch: " + parsed.error);
+      if (parsed.time->fraction != 0.0) throw UsageError("--epoch: give the UTC time of t = 0 in whole seconds");
       o.epoch = parsed.time->seconds;
     }
     const auto count = [&](const char* name) {

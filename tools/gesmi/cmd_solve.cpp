@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "io/io_version.h"
 #include "io/files/mission_digest.h"
 #include "io/files/mission_file.h"
 #include "io/output/output_set.h"
@@ -73,10 +72,7 @@ int run_solve(std::span<const std::string> args) {
   timings.insert(s.timings_ms.begin(), s.timings_ms.end());
 
   start = Clock::now();
-  result.navigation_digest = navigation;
-  result.bounds_digest = io::bounds_digest(mission.model);
-  result.marks_digest = io::marks_digest(mission, mission.mark_count());
-  result.version = std::string(io::version());
+  io::record_inputs(result, mission, navigation);
   result.solution.timings_ms = timings;
   const std::vector<std::string> written = io::write_solve_outputs(
       result, mission, output, std::filesystem::path(mission_path).filename().string(), siblings);

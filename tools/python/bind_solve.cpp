@@ -11,8 +11,6 @@
 
 #include "io/format_error.h"
 #include "io/geodesy.h"
-#include "io/io_version.h"
-#include "io/files/mission_digest.h"
 #include "io/files/mission_file.h"
 #include "io/files/result_file.h"
 #include "io/files/solve_outputs.h"
@@ -96,10 +94,7 @@ py::array_t<double> dense_waterfall(const Waterfall& w, const std::vector<double
 io::SolveResult as_result(const MissionSolution& s, const Mission& mission) {
   io::SolveResult r;
   r.solution = s;
-  r.navigation_digest = io::navigation_digest(mission);
-  r.bounds_digest = io::bounds_digest(mission.model);
-  r.marks_digest = io::marks_digest(mission, s.mark_count());
-  r.version = std::string(io::version());
+  io::record_inputs(r, mission);
   return r;
 }
 
