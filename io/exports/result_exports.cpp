@@ -6,6 +6,7 @@
 
 #include "io/output/atomic_output.h"
 #include "io/geodesy.h"
+#include "io/time/utc_time.h"
 
 namespace gesmi::io {
 namespace {
@@ -44,7 +45,8 @@ void write_mines_csv(const TubeDomains& d, const std::string& path) {
   write_text_file(path, text);
 }
 
-void write_geojson(const TubeDomains& d, const GeoOrigin& origin, const std::string& path, std::size_t polygons) {
+void write_geojson(const TubeDomains& d, const GeoOrigin& origin, std::optional<std::int64_t> epoch, const std::string& path,
+                   std::size_t polygons) {
   const LocalFrame frame(origin);
   std::string text = "{\"type\": \"FeatureCollection\", \"features\": [\n";
   bool first = true;
@@ -72,7 +74,7 @@ void write_geojson(const TubeDomains& d, const GeoOrigin& origin, const std::str
     envelope += (envelope.empty() ? "" : ", ") + ring(frame, north, east);
   }
   if (!envelope.empty())
-    feature("{\"kind\": \"envelope\"}", "{\"type\": \"MultiPolygon\", \"coordinates\": [" + envelope + "]}");
+    feature(epoch ? "{\"kind\": \"envelope\", \"epoch_utc\": \"" + format_iso8601(*epoch) + "\"}" : "{\"kind\": \"envelope\"}", "{\"type\": \"MultiPolygon\", \"coordinates\": [" + envelope + "]}");
   text += "\n]}\n";
   write_text_file(path, text);
 }

@@ -27,7 +27,7 @@ std::vector<std::string> write_solve_outputs(const SolveResult& result, const Mi
     written.push_back(siblings[0]);
   }
   if (asked.geojson) {
-    write_geojson(s.domains, mission.origin, siblings[1]);
+    write_geojson(s.domains, mission.origin, mission.epoch, siblings[1]);
     written.push_back(siblings[1]);
   }
   if (asked.envelope_png) {

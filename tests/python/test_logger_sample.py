@@ -40,3 +40,32 @@ def test_the_logger_sample_imports_with_its_command_and_holds_the_truth(tmp_path
     for i in range(m.mine_count):
         for axis in range(3):
             assert s.mines[i, axis, 0] <= mines[i, axis] <= s.mines[i, axis, 1]
+
+
+def test_results_and_exports_carry_the_logs_epoch(tmp_path):
+    import json
+
+    import h5py
+
+    for name in os.listdir(SAMPLE):
+        shutil.copy(os.path.join(SAMPLE, name), tmp_path)
+    with open(tmp_path / "import-command.txt") as f:
+        args = shlex.split(f.read())[1:]
+    gesmi_bin = os.path.abspath(GESMI) if os.sep in GESMI else GESMI
+    assert subprocess.run([gesmi_bin, *args], cwd=tmp_path, capture_output=True).returncode == 0
+    # The first row of log.csv is 2026-05-14T08:00:00.000000Z: t = 0 at that second.
+    r = subprocess.run([gesmi_bin, "solve", "mission.h5", "-o", "result.h5", "--geojson"], cwd=tmp_path,
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    with h5py.File(tmp_path / "mission.h5") as f:
+        assert f.attrs["epoch_utc"] in (b"2026-05-14T08:00:00Z", "2026-05-14T08:00:00Z")
+    with h5py.File(tmp_path / "result.h5") as f:
+        assert f.attrs["epoch_utc"] in (b"2026-05-14T08:00:00Z", "2026-05-14T08:00:00Z")
+    with open(tmp_path / "result.geojson") as f:
+        envelope = [x for x in json.load(f)["features"] if x["properties"]["kind"] == "envelope"]
+    assert envelope[0]["properties"]["epoch_utc"] == "2026-05-14T08:00:00Z"
+    # The mission's CSV export passes it on to the import that rebuilds it.
+    r = subprocess.run([gesmi_bin, "export", "mission.h5", "-o", "csv"], cwd=tmp_path, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    with open(tmp_path / "csv" / "import-command.txt") as f:
+        assert "--epoch 2026-05-14T08:00:00Z" in f.read()
