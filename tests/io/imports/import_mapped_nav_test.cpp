@@ -32,15 +32,14 @@ const char* kMap =
     "altitude: {column: alt}\n"
     "depth:    {column: z}\n";
 
-MappedNavLog read(const std::string& csv, const std::string& map_text = kMap) {
+MappedNavLog read(const std::string& csv, const std::string& map_text = kMap, const SensorModel& model = {}) {
   std::istringstream in(csv);
-  return read_mapped_nav(in, "log.csv", read_column_map(write_map(map_text), nav_map_schema(), true), SensorModel{},
-                         std::nullopt);
+  return read_mapped_nav(in, "log.csv", read_column_map(write_map(map_text), nav_map_schema(), true), model, std::nullopt);
 }
 
-std::string error_of(const std::string& csv, const std::string& map_text = kMap) {
+std::string error_of(const std::string& csv, const std::string& map_text = kMap, const SensorModel& model = {}) {
   try {
-    read(csv, map_text);
+    read(csv, map_text, model);
   } catch (const FormatError& e) {
     return e.what();
   }
@@ -105,6 +104,10 @@ TEST(MappedNav, GapsBeyondTheLimitAndSilentChannelsAreRefused) {
     csv += std::to_string(k) + ",0,0,0," + (dvl ? "1,0,0,5" : ",,,") + "," + (k % 10 == 0 ? "10" : "") + "\n";
   }
   EXPECT_EQ(read(csv).log.time.size(), 65u);
+  SensorModel sample;
+  sample.step_model = StepModel::sample;
+  EXPECT_NE(error_of(csv, kMap, sample).find("log.csv:78: vx: a DVL gap of 37 s (from line 41), which the step model 'sample'"),
+            std::string::npos) << error_of(csv, kMap, sample);
   const std::string gap = error_of(csv, std::string(kMap) + "max_gap: 30\n");
   EXPECT_NE(gap.find("log.csv:78: vx: no reading for 37 s (from 39 s to 76 s), beyond the 30 s limit (max_gap in"), std::string::npos)
       << gap;
