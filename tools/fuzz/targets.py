@@ -39,10 +39,12 @@ def make_seeds(gesmi, repo, folder):
     _run(gesmi, ["solve", "mission.h5", "-o", "result.h5"], folder)
     _run(gesmi, ["export", "mission.h5", "-o", "csv"], folder)
     _run(gesmi, ["export", "mission.h5", "--format", "gesmi-txt", "-o", "mission.txt"], folder)
+    _run(gesmi, ["export", "mission.h5", "--format", "logger", "--dvl-gap", "200:230", "-o", "logger"], folder)
     shutil.copy(os.path.join(repo, "missions/gesmi_txt/redermor_start.txt"), os.path.join(folder, "redermor.txt"))
     # Two marks that fit both missions (the text log is 30 s long).
     with open(os.path.join(folder, "marks10.csv"), "w") as f:
         f.write("time,mine,range,side\n10,?,20,starboard\n12,?,30,port\n")
+    _run(gesmi, [a[1:] if a.startswith("$") else a for a in IMPORT_LOGGER[:-1]] + ["logger-mission.h5"], folder)
     _run(gesmi, ["import", "gesmi-txt", "redermor.txt", "--marks", "marks10.csv", "-o", "txt_mission.h5"], folder)
     for name in ("triangle_two_hypotheses", "warehouse_p02", "warehouse_p04_outliers"):
         _scenario_seed(os.path.join(repo, "missions/localization", name + ".yaml"), os.path.join(folder, name + ".yaml"))
@@ -84,6 +86,17 @@ def _import_nav_with(option, value="@"):
     return args
 
 
+IMPORT_LOGGER = ["import", "nav", "$logger/log.csv", "--map", "$logger/map.yaml", "--gps", "$logger/gps.nmea", "--marks",
+                 "$logger/marks.csv", "--marks-map", "$logger/marks_map.yaml", "--config", "$logger/model.yaml",
+                 "--origin", ORIGIN, "--mines", "6", "-o", "out.h5"]
+
+
+def _import_logger_with(option):
+    args = list(IMPORT_LOGGER)
+    args[2 if option == "nav" else args.index("--" + option) + 1] = "@"
+    return args
+
+
 READERS = [
     Reader("mission:solve", "hdf5", ["mission.h5", "txt_mission.h5"],
            [["solve", "@", "-o", "out.h5"]], "mission.h5", [["out.h5"]]),
@@ -121,6 +134,16 @@ READERS = [
     Reader("csv:truth", "csv", ["csv/truth.csv"], [_import_nav_with("truth")], "truth.csv", [["out.h5"]]),
     Reader("csv:truth-mines", "csv", ["csv/truth_mines.csv"], [_import_nav_with("truth-mines")], "truth_mines.csv",
            [["out.h5"]]),
+    Reader("csv:logger-log", "csv", ["logger/log.csv"],
+           [["import", "nav", "@", "--map", "$logger/map.yaml", "--origin", ORIGIN, "-o", "out.h5"]], "log.csv", [["out.h5"]]),
+    Reader("yaml:map", "yaml", ["logger/map.yaml", "logger/marks_map.yaml"],
+           [_import_logger_with("map"), _import_logger_with("marks-map")], "map.yaml", [["out.h5"]] * 2),
+    Reader("txt:nmea", "txt", ["logger/gps.nmea"],
+           [_import_logger_with("gps"), _import_logger_with("gps")[:-2] + ["--gps-format", "nmea", "-o", "out.h5"]],
+           "gps.nmea", [["out.h5"]] * 2),
+    Reader("csv:logger-marks", "csv", ["logger/marks.csv"],
+           [_import_logger_with("marks"), ["import", "marks", "@", "--into", "$logger-mission.h5", "--map",
+                                           "$logger/marks_map.yaml", "-o", "out.h5"]], "marks.csv", [["out.h5"]] * 2),
     Reader("txt:gesmi", "txt", ["redermor.txt", "redermor.txt", "mission.txt"],
            [["import", "gesmi-txt", "@", "-o", "out.h5"], ["import", "gesmi-txt", "@", "--xy", "truth", "-o", "out.h5"],
             ["import", "gesmi-txt", "@", "--marks", "$marks10.csv", "--mines", "6", "-o", "out.h5"]], "log.txt",
