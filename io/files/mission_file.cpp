@@ -7,6 +7,7 @@
 #include "io/format_error.h"
 #include "io/geodesy.h"
 #include "io/files/model_attributes.h"
+#include "io/files/sensor_model_yaml.h"
 #include "io/hdf5/h5_file.h"
 #include "io/hdf5/h5_format.h"
 #include "io/imports/mark_rules.h"
@@ -288,6 +289,11 @@ void write_mission(const Mission& m, const std::string& path) {
     f.close();
   }
   out.commit();
+}
+
+void merge_model_config(Mission& m, const std::string& path) {
+  merge_sensor_model_yaml(path, m.model);
+  fill_local_gps(m, path);
 }
 
 }  // namespace gesmi::io

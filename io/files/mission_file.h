@@ -22,4 +22,8 @@ void write_mission(const Mission& mission, const std::string& path);
 /// simulator): throws FormatError prefixed with `source`.
 void validate_mission(const Mission& mission, const std::string& source);
 
+/// `--config`: merges the sensor model YAML at `path` over the mission's model, then
+/// recomputes what derives from the model (the fixes' boxes in the local frame).
+void merge_model_config(Mission& mission, const std::string& path);
+
 }  // namespace gesmi::io

@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <set>
 
+#include <fstream>
+
+#include "io/files/result_file.h"
 #include "tests/support/run_command.h"
 
 namespace gesmi::test {
@@ -56,6 +59,35 @@ TEST(CmdSolveOutputs, TheEnvelopePictureOfASimulatedMissionShowsTheTruth) {
       "sys.exit(0 if (a[:, :, 2] > a[:, :, 0] + 0.3).sum() > 500 else 1)\" " +
       folder + "/r.envelope.png";
   EXPECT_EQ(std::system(count.c_str()), 0) << "no truth drawn";
+}
+
+}  // namespace
+}  // namespace gesmi::test
+
+namespace gesmi::test {
+namespace {
+
+// `--config` changes the model after the mission was read: the fixes' boxes, which
+// derive from its GPS bounds, must follow (they did not before: a 30 m GPS bound
+// solved exactly as the mission's 2.5 m, excluding positions the user's bounds allow).
+TEST(CmdSolveOutputs, ConfigGpsBoundsReachTheFixBoxes) {
+  const std::string folder = temp_folder("solve-config-gps");
+  const std::string mission = folder + "/m.h5";
+  ASSERT_EQ(run_gesmi({"simulate", "--seed", "4", "--duration", "600", "-o", mission}).exit_code, 0);
+  { std::ofstream(folder + "/wide.yaml") << "gps_metres: 30\n"; }
+  ASSERT_EQ(run_gesmi({"solve", mission, "-o", folder + "/a.h5"}).exit_code, 0);
+  const CommandResult wide = run_gesmi({"solve", mission, "--config", folder + "/wide.yaml", "-o", folder + "/b.h5"});
+  ASSERT_EQ(wide.exit_code, 0) << wide.err;
+  const io::SolveResult a = io::read_result(folder + "/a.h5"), b = io::read_result(folder + "/b.h5");
+  const TubeDomains &da = a.solution.domains, &db = b.solution.domains;
+  ASSERT_EQ(da.size(), db.size());
+  // Wider bounds: every box contains the narrower one, and the fix at t = 0 is ±30 m.
+  for (std::size_t k = 0; k < da.size(); ++k) {
+    ASSERT_TRUE(db.px[k].is_superset(da.px[k])) << k;
+    ASSERT_TRUE(db.py[k].is_superset(da.py[k])) << k;
+  }
+  EXPECT_GT(db.px[0].width(), 2 * 25.0);
+  EXPECT_LT(da.px[0].width(), 2 * 5.0);
 }
 
 }  // namespace

@@ -8,7 +8,6 @@
 #include "io/output/atomic_output.h"
 #include "io/files/kalman_result.h"
 #include "io/files/mission_file.h"
-#include "io/files/sensor_model_yaml.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/progress.h"
@@ -51,7 +50,7 @@ int run_kalman(std::span<const std::string> args) {
   progress.update(-1.0, "reading " + v["mission"].as<std::string>());
   auto start = Clock::now();
   Mission mission = io::read_mission(v["mission"].as<std::string>());
-  if (v.count("config")) io::merge_sensor_model_yaml(v["config"].as<std::string>(), mission.model);
+  if (v.count("config")) io::merge_model_config(mission, v["config"].as<std::string>());
   file.timings_ms["load"] = elapsed_ms(start);
   start = Clock::now();
   progress.update(-1.0, "smoothing (" + std::to_string(o.iterations) + " linearisations)");

@@ -9,7 +9,6 @@
 #include "io/files/mission_digest.h"
 #include "io/files/mission_file.h"
 #include "io/output/output_set.h"
-#include "io/files/sensor_model_yaml.h"
 #include "io/files/solve_outputs.h"
 #include "io/files/warm_start_file.h"
 #include "solver/solve/solve_mission.h"
@@ -48,7 +47,7 @@ int run_solve(std::span<const std::string> args) {
   // The solve never looks at the truth; only the envelope picture draws it.
   const io::SolveSiblings siblings = parse_solve_siblings(v);
   Mission mission = io::read_mission(mission_path, siblings.envelope_png ? io::TruthReading::read : io::TruthReading::skip);
-  if (v.count("config")) io::merge_sensor_model_yaml(v["config"].as<std::string>(), mission.model);
+  if (v.count("config")) io::merge_model_config(mission, v["config"].as<std::string>());
   apply_mine_count(v, mission);
   // Hashed once: the warm start compares it, the result stores it.
   const std::string navigation = io::navigation_digest(mission);
