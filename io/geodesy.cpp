@@ -50,6 +50,29 @@ void set_geodetic_gps(Mission& m) {
   }
 }
 
+double frame_scale_margin(double reach, double depth) {
+  // The tangent plane shrinks a step at distance rho from the origin by at most
+  // 1 - cos(rho / M) <= rho^2 / (2 M^2), M = b^2 / a the smallest radius of curvature
+  // (measured against GeographicLib's geodesics in tests/io/geodesy_test.cpp); a
+  // robot at depth D sees the surface move faster by D / R <= D / M. 1 % covers the
+  // higher-order terms and the roundings.
+  const double a = GeographicLib::Constants::WGS84_a(), f = GeographicLib::Constants::WGS84_f();
+  const double smallest_radius = a * (1.0 - f) * (1.0 - f);
+  const double scale = reach * reach / (2.0 * smallest_radius * smallest_radius);
+  return 1.01 * (scale + std::max(depth, 0.0) / smallest_radius);
+}
+
+double deepest(const Mission& m) {
+  double deepest = 0.0;
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    const double bound = m.half_widths.depth.empty()
+                             ? m.model.depth_absolute + m.model.depth_relative * std::fabs(m.depth[k])
+                             : m.half_widths.depth[k];
+    deepest = std::max(deepest, m.depth[k] + bound);
+  }
+  return 1.000001 * deepest;  // the few roundings above
+}
+
 void fill_local_gps(Mission& m, const std::string& source) {
   const LocalFrame frame(m.origin);
   const std::size_t g = m.gps_time.size();
@@ -84,6 +107,10 @@ void fill_local_gps(Mission& m, const std::string& source) {
   // The heading's margin holds anywhere in the frame's zone: the solver bounds it
   // again, per sample, over the tube it solved (solver/network/heading_frame.h).
   m.heading_frame_margin = meridian_convergence_within(m.origin.latitude, kLocalFrameZone);
+  // The frame's scale along a path anywhere in the zone, and the surface point's
+  // speed at the deepest the robot can be (docs/model.md, "The local frame's scale").
+  m.frame_reach = kLocalFrameZone;
+  m.frame_scale_margin = frame_scale_margin(kLocalFrameZone, deepest(m));
   // A fix's bounds are north and east half-widths along its own meridian and
   // parallel, which turn against the frame's axes by the convergence where the true
   // position lies (within the larger half-width of the fix): the frame box must hold

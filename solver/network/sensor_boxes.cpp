@@ -23,12 +23,14 @@ Interval SensorBoxes::heading(std::size_t k) const {
 }
 
 Vec3I SensorBoxes::velocity(std::size_t k) const {
-  // v ± (a |v| + b), the bound rounded up. kFrameScaleMargin adds what the local
-  // tangent frame does to distances (docs/model.md): up to 1.25e-6 of the distance
-  // travelled 10 km from the origin, and depth / R (1.6e-5 at 100 m).
+  // v ± (a |v| + b) per component (or the sample's own half-width), rounded up, plus
+  // what the local tangent frame does to distances: Mission::frame_scale_margin times
+  // |vx| + |vy| + |vz| on every component, since the frame's distortion turns a
+  // velocity's error off its own axis (docs/model.md, "The local frame's scale").
+  const double frame = mul_up(m_.frame_scale_margin, add_up(add_up(std::fabs(m_.vx[k]), std::fabs(m_.vy[k])), std::fabs(m_.vz[k])));
   const auto component = [&](const std::vector<double>& v, const std::vector<double>& hw) {
-    const double bound = add_up(mul_up(add_up(model_.dvl_relative, kFrameScaleMargin), std::fabs(v[k])), model_.dvl_absolute);
-    return reading(v, hw, k, bound);
+    const double own = hw.empty() ? add_up(mul_up(model_.dvl_relative, std::fabs(v[k])), model_.dvl_absolute) : hw[k];
+    return Interval::around(v[k], add_up(own, frame));
   };
   return Vec3I(component(m_.vx, m_.half_widths.vx), component(m_.vy, m_.half_widths.vy),
                component(m_.vz, m_.half_widths.vz));

@@ -16,9 +16,6 @@
 
 namespace gesmi {
 
-/// Relative widening of the DVL speed for the local frame's scale (see velocity()).
-inline constexpr double kFrameScaleMargin = 2e-5;
-
 /// Whether a trapezoid step of duration at most dt_hi is also intersected with the rate
 /// hull (SensorBoxes::step_increment explains why only then it can cut).
 inline bool trapezoid_takes_rate_hull(const SensorModel& model, double dt_hi) {

@@ -69,6 +69,7 @@ inline void narrow_sin_cos(double s, double c, double r, Bounds& sin_box, Bounds
 
 struct VelocityModel {
   double relative, absolute;  // bound = relative |v| + absolute, unless given per sample
+  double frame;               // plus frame (|vx| + |vy| + |vz|) on every component
   bool per_sample[3];
 };
 
@@ -80,9 +81,12 @@ struct VelocityModel {
   for (std::size_t j = 0; j < n; ++j) {
     Bounds sine[3], cosine[3], v[3];
     for (int a = 0; a < 3; ++a) narrow_sin_cos(in.sin[a][j], in.cos[a][j], in.radius[a][j], sine[a], cosine[a]);
+    const double frame =
+        vm.frame * ((std::fabs(in.velocity[0][j]) + std::fabs(in.velocity[1][j])) + std::fabs(in.velocity[2][j]));
     for (int i = 0; i < 3; ++i) {
       const double value = in.velocity[i][j];
-      const double bound = vm.per_sample[i] ? in.velocity_bound[i][j] : vm.relative * std::fabs(value) + vm.absolute;
+      const double own = vm.per_sample[i] ? in.velocity_bound[i][j] : vm.relative * std::fabs(value) + vm.absolute;
+      const double bound = own + frame;
       v[i] = {(-value) + bound, value + bound};
     }
     // Rx(phi), then Ry(theta), then Rz(psi).
@@ -141,8 +145,9 @@ void read_block(const Mission& m, const SensorModel& model, std::size_t first, s
 
 VelocityModel velocity_model(const Mission& m, const SensorModel& model) {
   // v ± (a |v| + b) as SensorBoxes::velocity(), the frame scale margin included.
-  return {add_up(model.dvl_relative, kFrameScaleMargin),
+  return {model.dvl_relative,
           model.dvl_absolute,
+          m.frame_scale_margin,
           {!m.half_widths.vx.empty(), !m.half_widths.vy.empty(), !m.half_widths.vz.empty()}};
 }
 

@@ -122,6 +122,24 @@ TEST(Geodesy, TheFrameScaleAlongAPathStaysWithin1Point25PerMillionAt10km) {
   std::printf("worst frame scale error at 10 km: %.3g (bound d^2/2M^2 = %.3g)\n", worst, kScaleBound);
   EXPECT_LE(worst, 1.05 * kScaleBound);
   EXPECT_GT(worst, 0.8 * kScaleBound);
+  // The DVL's margin (Mission::frame_scale_margin) holds what was measured.
+  EXPECT_LE(worst, frame_scale_margin(kZone, 0.0));
+}
+
+// A robot at depth D sees the surface point above it move faster by D / (R - D), R the
+// radius of curvature (at least M = b^2/a): the margin holds it up to 6 km deep.
+TEST(Geodesy, FrameScaleMarginHoldsTheDepthEffect) {
+  for (const double depth : {0.0, 20.0, 300.0, 6000.0}) {
+    EXPECT_GE(frame_scale_margin(0.0, depth), depth / (kRadius - depth)) << depth;
+    EXPECT_LE(frame_scale_margin(0.0, depth), 1.02 * depth / kRadius) << depth;
+  }
+  Mission m;
+  m.depth = {5.0, 80.0, 12.0};
+  m.time = {0.0, 1.0, 2.0};
+  EXPECT_GE(deepest(m), 80.0 + m.model.depth_absolute + m.model.depth_relative * 80.0);
+  m.half_widths.depth = {1.0, 0.5, 100.0};
+  EXPECT_GE(deepest(m), 112.0);
+  EXPECT_LT(deepest(m), 112.001);
 }
 
 TEST(Geodesy, GpsBoxesAreWidenedAndHoldTheFixes) {

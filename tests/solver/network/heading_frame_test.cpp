@@ -107,11 +107,14 @@ long double farthest_speed(const Mission& m) {
   const std::vector<double>* widths[3] = {&m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz};
   for (std::size_t k = 0; k < m.size(); ++k) {
     long double squared = 0.0L;
+    const long double frame = static_cast<long double>(m.frame_scale_margin) *
+                              (std::fabs(static_cast<long double>(m.vx[k])) + std::fabs(static_cast<long double>(m.vy[k])) +
+                               std::fabs(static_cast<long double>(m.vz[k])));
     for (int i = 0; i < 3; ++i) {
       const long double v = std::fabs(static_cast<long double>((*readings[i])[k]));
       const long double bound =
-          widths[i]->empty() ? (static_cast<long double>(m.model.dvl_relative) + kFrameScaleMargin) * v + m.model.dvl_absolute
-                             : (*widths[i])[k];
+          (widths[i]->empty() ? static_cast<long double>(m.model.dvl_relative) * v + m.model.dvl_absolute : (*widths[i])[k]) +
+          frame;
       squared += (v + bound) * (v + bound);
     }
     largest = std::max(largest, std::sqrt(squared));
@@ -124,6 +127,7 @@ TEST(HeadingFrame, SpeedBoundHoldsTheFarthestCornerOfEveryDvlBox) {
   const SensorModel model = test::model_with(StepModel::trapezoid, 1.0);
   for (const SmoothTruth& truth : test::truths()) {
     Mission m = test::mission_of(truth, model, 400, 7, 0.0);
+    m.frame_scale_margin = 3e-5;  // as io/ sets it for a 10 km zone and 150 m depth
     for (const bool per_sample : {false, true}) {
       if (per_sample)
         for (auto* w : {&m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz}) w->assign(m.size(), 0.03);
