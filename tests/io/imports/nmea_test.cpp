@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/timegm_oracle.h"
+
 #include <ctime>
 #include <sstream>
 
@@ -18,16 +20,7 @@ namespace {
 constexpr const char* kRmc = "$GPRMC,123519,A,4807.038,N,01131.000,E,022.4,084.4,230394,003.1,W*6A";
 constexpr const char* kGga = "$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47";
 
-std::int64_t utc(int year, int month, int day, int hour, int minute, int second) {
-  std::tm t{};
-  t.tm_year = year - 1900;
-  t.tm_mon = month - 1;
-  t.tm_mday = day;
-  t.tm_hour = hour;
-  t.tm_min = minute;
-  t.tm_sec = second;
-  return static_cast<std::int64_t>(timegm(&t));
-}
+using test::timegm_seconds;
 
 NmeaFixes read(const std::string& text, std::optional<std::int64_t> date = std::nullopt) {
   std::istringstream in(text);
@@ -46,7 +39,7 @@ std::string error_of(const std::string& text, std::optional<std::int64_t> date =
 TEST(Nmea, TheTextbookPairGivesItsFix) {
   const NmeaFixes f = read(std::string(kRmc) + "\r\n" + kGga + "\r\n");
   ASSERT_EQ(f.time.size(), 1u);
-  EXPECT_EQ(f.time[0].seconds, utc(1994, 3, 23, 12, 35, 19));
+  EXPECT_EQ(f.time[0].seconds, timegm_seconds(1994, 3, 23, 12, 35, 19));
   EXPECT_EQ(f.time[0].fraction, 0.0);
   EXPECT_DOUBLE_EQ(f.latitude[0], 48.0 + 7.038 / 60.0);
   EXPECT_DOUBLE_EQ(f.longitude[0], 11.0 + 31.0 / 60.0);
@@ -74,7 +67,7 @@ TEST(Nmea, NoFixQualityOtherSentencesAndSouthWest) {
   EXPECT_EQ(f.no_fix, 1u);
   EXPECT_EQ(f.other, 1u);
   ASSERT_EQ(f.time.size(), 1u);
-  EXPECT_EQ(f.time[0].seconds, utc(1994, 3, 23, 12, 35, 21));
+  EXPECT_EQ(f.time[0].seconds, timegm_seconds(1994, 3, 23, 12, 35, 21));
   EXPECT_EQ(f.time[0].fraction, 0.25);
   EXPECT_DOUBLE_EQ(f.latitude[0], -(33.0 + 45.5 / 60.0));
   EXPECT_DOUBLE_EQ(f.longitude[0], -(70.0 + 30.0 / 60.0));
@@ -87,13 +80,13 @@ TEST(Nmea, DatesCrossMidnightBothWays) {
   const std::string before = nmea_sentence("GPGGA,235958,4807.038,N,01131.000,E,1,08,0.9,0.0,M,0.0,M,,");
   NmeaFixes f = read(before + "\n" + rmc + "\n" + after + "\n");
   ASSERT_EQ(f.time.size(), 2u);
-  EXPECT_EQ(f.time[0].seconds, utc(2025, 12, 31, 23, 59, 58));  // dated by the first RMC after it
-  EXPECT_EQ(f.time[1].seconds, utc(2026, 1, 1, 0, 0, 1));
+  EXPECT_EQ(f.time[0].seconds, timegm_seconds(2025, 12, 31, 23, 59, 58));  // dated by the first RMC after it
+  EXPECT_EQ(f.time[1].seconds, timegm_seconds(2026, 1, 1, 0, 0, 1));
   // Without RMC, --date dates the first fix and the time of day falling back is midnight.
-  f = read(before + "\n" + after + "\n", utc(2025, 12, 31, 0, 0, 0) / 86400);
+  f = read(before + "\n" + after + "\n", timegm_seconds(2025, 12, 31, 0, 0, 0) / 86400);
   ASSERT_EQ(f.time.size(), 2u);
-  EXPECT_EQ(f.time[0].seconds, utc(2025, 12, 31, 23, 59, 58));
-  EXPECT_EQ(f.time[1].seconds, utc(2026, 1, 1, 0, 0, 1));
+  EXPECT_EQ(f.time[0].seconds, timegm_seconds(2025, 12, 31, 23, 59, 58));
+  EXPECT_EQ(f.time[1].seconds, timegm_seconds(2026, 1, 1, 0, 0, 1));
 }
 
 TEST(Nmea, RefusalsNameTheLineAndTheField) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/timegm_oracle.h"
+
 #include <cstdio>
 #include <ctime>
 #include <random>
@@ -11,16 +13,7 @@
 namespace gesmi::io {
 namespace {
 
-std::int64_t oracle_seconds(int year, int month, int day, int hour, int minute, int second) {
-  std::tm t{};
-  t.tm_year = year - 1900;
-  t.tm_mon = month - 1;
-  t.tm_mday = day;
-  t.tm_hour = hour;
-  t.tm_min = minute;
-  t.tm_sec = second;
-  return static_cast<std::int64_t>(timegm(&t));
-}
+using test::timegm_seconds;
 
 TEST(UtcTime, RandomInstantsAgreeWithTimegmInEveryZoneForm) {
   std::mt19937_64 rng(7);
@@ -34,7 +27,7 @@ TEST(UtcTime, RandomInstantsAgreeWithTimegmInEveryZoneForm) {
     const int a = std::abs(off);
     const char* forms[] = {"%04d-%02d-%02dT%02d:%02d:%02d%c%02d:%02d", "%04d-%02d-%02d %02d:%02d:%02d%c%02d%02d"};
     std::snprintf(text, sizeof text, forms[i % 2], y, mo, d, h, mi, s, sign, a / 60, a % 60);
-    const std::int64_t expected = oracle_seconds(y, mo, d, h, mi, s) - off * 60;
+    const std::int64_t expected = timegm_seconds(y, mo, d, h, mi, s) - off * 60;
     const ParsedTime p = parse_iso8601(text);
     if (expected < 0 || expected >= 7258118400) {
       EXPECT_FALSE(p.time) << text;
@@ -66,7 +59,7 @@ TEST(UtcTime, FormatsWhatTimegmGivesBack) {
 TEST(UtcTime, FractionsZoneLettersAndDefaultZone) {
   const ParsedTime a = parse_iso8601("2026-05-14T08:00:00.125Z");
   ASSERT_TRUE(a.time);
-  EXPECT_EQ(a.time->seconds, oracle_seconds(2026, 5, 14, 8, 0, 0));
+  EXPECT_EQ(a.time->seconds, timegm_seconds(2026, 5, 14, 8, 0, 0));
   EXPECT_EQ(a.time->fraction, 0.125);
   EXPECT_EQ(a.time->since(a.time->seconds - 10), 10.125);
   const ParsedTime b = parse_iso8601("2026-05-14T10:00:00,5+02");
