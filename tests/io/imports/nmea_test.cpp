@@ -7,7 +7,6 @@
 
 #include "tests/support/timegm_oracle.h"
 
-#include <ctime>
 #include <sstream>
 
 #include "io/exports/export_logger.h"
