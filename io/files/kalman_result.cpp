@@ -5,6 +5,7 @@
 #include "io/output/atomic_output.h"
 #include "io/hdf5/h5_file.h"
 #include "io/io_version.h"
+#include "io/time/utc_time.h"
 
 namespace gesmi::io {
 
@@ -20,6 +21,7 @@ void write_kalman_result(const KalmanFile& k, const std::string& path) {
     f.write_3d("/kalman/mines/cov", r.mine_covariance, r.mines, 3, 3);
     f.set_attribute("/", "format", std::string("gesmi-kalman"));
     f.set_attribute("/", "gesmi_version", std::string(version()));
+    if (k.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*k.epoch));
     f.set_attribute("/", "noise_factor", k.options.noise_factor);
     f.set_attribute("/", "iterations", static_cast<std::int64_t>(r.iterations));
     f.set_attribute("/", "containment_3sigma_trajectory", k.containment_trajectory);

@@ -3,7 +3,9 @@
 // /kalman/cov (N x 3 x 3), /kalman/mines/mean (K x 3), /kalman/mines/cov (K x 3 x 3),
 // and attributes (timings, options, containment on simulated missions).
 
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,7 @@ struct KalmanFile {
   KalmanOptions options;
   std::map<std::string, double> timings_ms;
   double containment_trajectory = 0.0, containment_mines = 0.0;  // NaN without truth
+  std::optional<std::int64_t> epoch;  // the mission's UTC epoch of t = 0, when it has one
 };
 
 void write_kalman_result(const KalmanFile& file, const std::string& path);

@@ -61,6 +61,10 @@ def test_results_and_exports_carry_the_logs_epoch(tmp_path):
         assert f.attrs["epoch_utc"] in (b"2026-05-14T08:00:00Z", "2026-05-14T08:00:00Z")
     with h5py.File(tmp_path / "result.h5") as f:
         assert f.attrs["epoch_utc"] in (b"2026-05-14T08:00:00Z", "2026-05-14T08:00:00Z")
+    r = subprocess.run([gesmi_bin, "kalman", "mission.h5", "-o", "kalman.h5"], cwd=tmp_path, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    with h5py.File(tmp_path / "kalman.h5") as f:
+        assert f.attrs["epoch_utc"] in (b"2026-05-14T08:00:00Z", "2026-05-14T08:00:00Z")
     with open(tmp_path / "result.geojson") as f:
         envelope = [x for x in json.load(f)["features"] if x["properties"]["kind"] == "envelope"]
     assert envelope[0]["properties"]["epoch_utc"] == "2026-05-14T08:00:00Z"

@@ -60,6 +60,7 @@ int run_kalman(std::span<const std::string> args) {
   file.containment_trajectory = c.trajectory;
   file.containment_mines = c.mines;
   file.time = mission.time;
+  file.epoch = mission.epoch;
   file.options = o;
   start = Clock::now();
   progress.update(-1.0, "writing " + output);
