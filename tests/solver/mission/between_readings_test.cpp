@@ -96,6 +96,36 @@ TEST(BetweenReadings, HeadingsAcrossTheWrapHoldTheTruthModuloTwoPi) {
   EXPECT_GT(wraps, 50u);  // the readings do jump across +-pi
 }
 
+// Readings far apart at a high turn rate: several 2 pi branches are within reach, and
+// only a one-sided box is sound (an intersection across branches lost the truth).
+TEST(BetweenReadings, HeadingsFarApartKeepTheTruthWhenSeveralBranchesAreWithinReach) {
+  std::mt19937_64 rng(9);
+  std::size_t checked = 0, wraps = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const double rate = 0.3, e = 5.27e-3;
+    Signal y = random_signal(rng, rate);
+    y.p += kPi;
+    const Case c = make_case(rng, y, trial % 2 ? 15.0 : 40.0, e, true);
+    const ChannelAtGrid at = enclose_between_readings(c.readings, c.grid, rate, true);
+    ASSERT_FALSE(at.conflict) << "trial " << trial;
+    for (std::size_t i = 1; i < c.readings.value.size(); ++i)
+      wraps += std::fabs(c.readings.value[i] - c.readings.value[i - 1]) > kPi;
+    for (std::size_t k = 0; k < c.grid.size(); ++k) {
+      ASSERT_LE(std::fabs(wrapped(y(c.grid[k]) - at.value[k])), at.half_width[k]) << "trial " << trial << " t " << c.grid[k];
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 200000u);
+  EXPECT_GT(wraps, 50u);
+  // The review's case: 1 rad at t = 0, 5.5 rad (= -0.783) at t = 10, exact readings,
+  // 0.5 rad/s: the path through 0 is at -0.07 rad at t = 6.
+  const ChannelReadings r{{0.0, 10.0}, {1.0, 5.5}, {0.0, 0.0}};
+  const std::vector<double> grid = {6.0};
+  const ChannelAtGrid at = enclose_between_readings(r, grid, 0.5, true);
+  ASSERT_FALSE(at.conflict);
+  EXPECT_LE(std::fabs(wrapped(1.0 - (1.0 - (5.5 - 2.0 * kPi)) * 0.6 - at.value[0])), at.half_width[0]);
+}
+
 TEST(BetweenReadings, BoxesAreTheReadingAtItsTimeAndTheNarrowerSideBetween) {
   ChannelReadings r{{0.0, 10.0}, {5.0, 6.0}, {1.0, 1.0}};
   const std::vector<double> grid = {-2.0, 0.0, 1.0, 9.0, 10.0, 12.0};
