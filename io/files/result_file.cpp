@@ -263,7 +263,7 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     r.epoch = parsed.time->seconds;
   }
   if (verified) {
-    s.model = read_model_attributes(f, "/model", 2);
+    s.model = read_model_attributes(f, "/model", r.format_version >= 4 ? 3 : 2);  // the model keys of its mission format
     const std::string mode = text("mode");
     s.report.mode = mode_named(mode);
     if (mode != solve_mode_name(s.report.mode)) bad(f, "/", "attribute mode is not one gesmi writes");

@@ -123,6 +123,7 @@ struct Rmc {
 bool looks_like_nmea(std::istream& in) {
   std::string line;
   while (std::getline(in, line)) {
+    if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte order mark
     const std::size_t first = line.find_first_not_of(" \t\r");
     if (first == std::string::npos) continue;
     return line[first] == '$';
@@ -139,6 +140,7 @@ NmeaFixes read_nmea(std::istream& in, const std::string& name, std::optional<std
   while (std::getline(in, text)) {
     ++line;
     std::string_view view = text;
+    if (line == 1 && view.rfind("\xEF\xBB\xBF", 0) == 0) view.remove_prefix(3);  // a UTF-8 byte order mark
     while (!view.empty() && (view.back() == '\r' || view.back() == ' ')) view.remove_suffix(1);
     while (!view.empty() && view.front() == ' ') view.remove_prefix(1);
     if (view.empty()) continue;
@@ -154,9 +156,12 @@ NmeaFixes read_nmea(std::istream& in, const std::string& name, std::optional<std
     const SentenceError e(name, line, s);
     ++order;
     if (s.type == "GGA") {
+      // 1 GPS, 2 differential, 3 PPS, 4 RTK, 5 float RTK: measured fixes. 0 is none;
+      // 6 (dead reckoning), 7 (manual input) and 8 (simulation) are not measurements.
       const std::string_view quality = e.field(6);
-      if (!all_digits(quality)) e.fail(6, "expected a fix quality 0-8, found " + quoted_input(quality));
-      if (quality == "0") {
+      if (quality.size() != 1 || quality[0] < '0' || quality[0] > '8')
+        e.fail(6, "expected a fix quality 0-8, found " + quoted_input(quality));
+      if (quality == "0" || quality[0] >= '6') {
         ++out.no_fix;
         continue;
       }

@@ -2,7 +2,8 @@
 // GPS fixes from NMEA 0183 sentences (docs/formats.md, "NMEA"). A small strict
 // parser (Debian packages no C++ NMEA library): every line is a sentence
 // "$ttSSS,f1,...*hh" (blank lines skipped). GGA gives the fixes (time of day,
-// latitude, longitude, fix quality: quality 0 is no fix, skipped); RMC gives the date;
+// latitude, longitude, fix quality: 1-5 are measured fixes; 0 (none), 6 (dead
+// reckoning), 7 (manual) and 8 (simulation) are skipped and counted); RMC the date;
 // other sentences are counted and ignored. The checksum is verified: a sentence with
 // a bad or missing one is skipped and counted. A sentence whose checksum holds but
 // whose fields do not parse is an error naming the line and the field.
@@ -28,7 +29,7 @@ struct NmeaFixes {
   std::vector<double> latitude, longitude;  // degrees
   std::vector<std::size_t> line;
   std::size_t bad_checksum = 0;  // sentences skipped
-  std::size_t no_fix = 0;        // GGA with quality 0
+  std::size_t no_fix = 0;        // GGA with quality 0 (no fix) or 6-8 (estimated, manual, simulated)
   std::size_t other = 0;         // sentences neither GGA nor RMC
   std::size_t rmc = 0;
 };

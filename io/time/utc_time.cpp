@@ -118,7 +118,9 @@ ParsedTime parse_epoch_seconds(std::string_view text) {
   const std::string_view whole = text.substr(0, dot);
   std::int64_t seconds = 0;
   const auto [end, ec] = std::from_chars(whole.data(), whole.data() + whole.size(), seconds);
-  if (whole.empty() || ec != std::errc() || end != whole.data() + whole.size())
+  // Digits only: "-0.5" would read as 0 and then + 0.5.
+  if (whole.empty() || whole.find_first_not_of("0123456789") != std::string_view::npos || ec != std::errc() ||
+      end != whole.data() + whole.size())
     return failure("expected Unix time in seconds since 1970 (like 1717245296.25)");
   double fraction = 0.0;
   if (dot != std::string_view::npos) {

@@ -78,6 +78,18 @@ TEST(MappedNav, AnyOrderExtraColumnsUnitsAndTheDvlGrid) {
   EXPECT_NE(log.notes[1].find("depth at 1"), std::string::npos);
 }
 
+TEST(MappedNav, AnyConvertedDvlComponentWidensTheDvlBound) {
+  std::string map = kMap;
+  map.replace(map.find("{column: u, unit: knots}"), 24, "{column: u}");
+  map.replace(map.find("{column: w}"), 11, "{column: w, unit: knots}");
+  const std::string csv = "t,r,p,h,u,v,w,alt,z\n0,0,0,0,1,0,3,5,10\n1,0,0,0,1,0,3,5,10\n";
+  const MappedNavLog log = read(csv, map);
+  EXPECT_GT(log.model.dvl_absolute, SensorModel{}.dvl_absolute);
+  std::string si = kMap;
+  si.replace(si.find("{column: u, unit: knots}"), 24, "{column: u}");
+  EXPECT_EQ(read(csv, si).model.dvl_absolute, SensorModel{}.dvl_absolute);
+}
+
 TEST(MappedNav, DelimitersDeclaredOrDetected) {
   const std::string rows = "0 0 0 0 1 0 0 5 10\n1 0 0 0 1 0 0 5 10\n";
   const std::string map = std::string(kMap) + "delimiter: whitespace\n";

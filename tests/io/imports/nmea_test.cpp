@@ -60,10 +60,12 @@ TEST(Nmea, BadChecksumsAreSkippedAndCounted) {
 
 TEST(Nmea, NoFixQualityOtherSentencesAndSouthWest) {
   const std::string no_fix = nmea_sentence("GPGGA,123520,,,,,0,00,,,M,,M,,");
+  const std::string dead_reckoning = nmea_sentence("GPGGA,123520.5,4807.038,N,01131.000,E,6,00,,,M,,M,,");
   const std::string south_west = nmea_sentence("GNGGA,123521.25,3345.5000,S,07030.0000,W,2,10,0.8,1.0,M,0.0,M,,");
   const std::string other = nmea_sentence("GPVTG,054.7,T,034.4,M,005.5,N,010.2,K");
-  const NmeaFixes f = read(std::string(kRmc) + "\n" + no_fix + "\n" + other + "\n" + south_west + "\n");
-  EXPECT_EQ(f.no_fix, 1u);
+  const NmeaFixes f =
+      read("\xEF\xBB\xBF" + std::string(kRmc) + "\n" + no_fix + "\n" + dead_reckoning + "\n" + other + "\n" + south_west + "\n");
+  EXPECT_EQ(f.no_fix, 2u);
   EXPECT_EQ(f.other, 1u);
   ASSERT_EQ(f.time.size(), 1u);
   EXPECT_EQ(f.time[0].seconds, timegm_seconds(1994, 3, 23, 12, 35, 21));
@@ -88,6 +90,14 @@ TEST(Nmea, DatesCrossMidnightBothWays) {
   EXPECT_EQ(f.time[1].seconds, timegm_seconds(2026, 1, 1, 0, 0, 1));
 }
 
+TEST(Nmea, DetectedFromTheFirstSentenceEvenAfterAByteOrderMark) {
+  std::istringstream bom("\xEF\xBB\xBF" + std::string(kRmc) + "\n"), blank_first("\n  \n" + std::string(kGga)),
+      csv("time,longitude,latitude\n0,1,2\n");
+  EXPECT_TRUE(looks_like_nmea(bom));
+  EXPECT_TRUE(looks_like_nmea(blank_first));
+  EXPECT_FALSE(looks_like_nmea(csv));
+}
+
 TEST(Nmea, RefusalsNameTheLineAndTheField) {
   EXPECT_NE(error_of(std::string(kGga) + "\n").find("--date"), std::string::npos);
   EXPECT_NE(error_of("hello\n").find("gps.nmea:1: not an NMEA sentence"), std::string::npos);
@@ -100,6 +110,7 @@ TEST(Nmea, RefusalsNameTheLineAndTheField) {
   EXPECT_NE(field_error("GPGGA,123519,4807.038,X,01131.000,E,1,08,0.9,545.4,M,46.9,M,,").find("field 3"), std::string::npos);
   EXPECT_NE(field_error("GPGGA,123519,4807.038,N,1131.000,E,1,08,0.9,545.4,M,46.9,M,,").find("field 4"), std::string::npos);
   EXPECT_NE(field_error("GPGGA,123519,4807.038,N,01131.000,E,x,08").find("field 6"), std::string::npos);
+  EXPECT_NE(field_error("GPGGA,123519,4807.038,N,01131.000,E,9,08").find("field 6"), std::string::npos);
   EXPECT_NE(field_error("GPGGA,123519,4807.038,N,01131.000,E").find("field 6: missing"), std::string::npos);
   EXPECT_NE(field_error("GPRMC,123519,A,4807.038,N,01131.000,E,022.4,084.4,300294,003.1,W").find("field 9: the date"),
             std::string::npos);

@@ -96,7 +96,7 @@ TEST(UtcTime, EpochSecondsKeepTheirFraction) {
   ASSERT_TRUE(p.time);
   EXPECT_EQ(p.time->seconds, 1778745600);
   EXPECT_EQ(p.time->since(1778745600), 0.000001);  // a double of 1.7e9 s alone keeps 0.2 us
-  for (const char* bad : {"", "-1", "1e9", "17787456OO", "1778745600.", "1778745600.5.5", "99999999999", "nan"})
+  for (const char* bad : {"", "-1", "-0.5", "+5", "1e9", "17787456OO", "1778745600.", "1778745600.5.5", "99999999999", "nan"})
     EXPECT_FALSE(parse_epoch_seconds(bad).time) << bad;
   EXPECT_EQ(parse_utc_offset("UTC"), 0);
   EXPECT_EQ(parse_utc_offset("-05:30"), -19800);
