@@ -63,13 +63,13 @@ double frame_scale_margin(double reach, double depth) {
 }
 
 double deepest(const Mission& m) {
-  double deepest = 0.0;
+  double deepest = 0.0, longest = 0.0;
   for (std::size_t k = 0; k < m.size(); ++k) {
-    const double bound = m.half_widths.depth.empty()
-                             ? m.model.depth_absolute + m.model.depth_relative * std::fabs(m.depth[k])
-                             : m.half_widths.depth[k];
-    deepest = std::max(deepest, m.depth[k] + bound);
+    deepest = std::max(deepest, m.depth[k] + (m.half_widths.depth.empty() ? depth_bound(m.model, m.depth[k]) : m.half_widths.depth[k]));
+    if (k + 1 < m.size()) longest = std::max(longest, m.time[k + 1] - m.time[k]);
   }
+  // Between samples the robot can go deeper, at max_depth_rate, for half the longest step.
+  deepest += m.model.max_depth_rate * longest / 2.0;
   return 1.000001 * deepest;  // the few roundings above
 }
 
@@ -109,7 +109,6 @@ void fill_local_gps(Mission& m, const std::string& source) {
   m.heading_frame_margin = meridian_convergence_within(m.origin.latitude, kLocalFrameZone);
   // The frame's scale along a path anywhere in the zone, and the surface point's
   // speed at the deepest the robot can be (docs/model.md, "The local frame's scale").
-  m.frame_reach = kLocalFrameZone;
   m.frame_scale_margin = frame_scale_margin(kLocalFrameZone, deepest(m));
   // A fix's bounds are north and east half-widths along its own meridian and
   // parallel, which turn against the frame's axes by the convergence where the true

@@ -44,11 +44,12 @@ void set_geodetic_gps(Mission& mission);
 /// The relative scale error of the local frame along a path within `reach` metres of
 /// the origin, for a robot at most `depth` metres deep (Mission::frame_scale_margin).
 double frame_scale_margin(double reach, double depth);
-/// The deepest the robot can be: the largest depth reading plus its bound (m).
+/// The deepest the robot can be (m): the largest depth reading plus its bound, plus
+/// max_depth_rate for half the longest step.
 double deepest(const Mission& mission);
 
 /// Fills gps_north/east and their half-widths, heading_frame_margin and the frame's
-/// scale margin (frame_reach, frame_scale_margin), from the
+/// scale margin (frame_scale_margin), from the
 /// fixes, the origin and the sensor model (or the per-fix given bounds when the
 /// mission has them). Throws FormatError (naming `source` and
 /// the fix) when a fix lies farther than kLocalFrameZone from the origin.

@@ -56,7 +56,7 @@ double model_half_width(const SensorModel& model, std::size_t column, double val
     case GesmiColumn::vx:
     case GesmiColumn::vy:
     case GesmiColumn::vz: return add_up(mul_up(model.dvl_relative, std::fabs(value)), model.dvl_absolute);
-    case GesmiColumn::depth: return add_up(model.depth_absolute, mul_up(model.depth_relative, std::fabs(value)));
+    case GesmiColumn::depth: return depth_bound(model, value);
     default: return model.altitude;
   }
 }

@@ -148,7 +148,7 @@ MappedNavLog read_mapped_nav(std::istream& in, const std::string& name, const Co
     Series& s = series[e.channel];
     // Each reading's half-width as the solver computes it from the model (SensorBoxes).
     for (const double v : s.readings.value)
-      s.readings.half_width.push_back(e.channel == depth ? add_up(model.depth_absolute, mul_up(model.depth_relative, std::fabs(v)))
+      s.readings.half_width.push_back(e.channel == depth ? depth_bound(model, v)
                                       : e.channel == altitude ? model.altitude
                                                               : *angle_bound[e.channel]);
     // A channel read on every grid row keeps the model's bounds (no half-widths).

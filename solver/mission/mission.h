@@ -78,13 +78,12 @@ struct Mission {
   // convergence) anywhere in the frame's zone (rad), added to the heading bound; the
   // solve narrows it per sample over the tube (solver/network/heading_frame.h).
   double heading_frame_margin = 0.0;
-  // The local frame's scale against the sea surface along any path the robot can take
-  // (docs/model.md, "The local frame's scale"), filled by io/ with `frame_reach`, the
-  // largest distance from the origin the robot can reach: each DVL component's bound
-  // grows by frame_scale_margin (|vx| + |vy| + |vz|). Zero for a mission made in a flat
-  // world (the simulator's, before it is written).
+  // The local frame's scale against the sea surface along any path within the frame's
+  // zone, at the deepest the robot can be (docs/model.md, "The local frame's scale"),
+  // filled by io/: each DVL component's bound grows by frame_scale_margin times the
+  // box's largest |vx| + |vy| + |vz|. Zero for a mission made in a flat world (the
+  // simulator's, before it is written).
   double frame_scale_margin = 0.0;
-  double frame_reach = 0.0;  // m
 
   // Mark table, M detections.
   std::vector<double> mark_time;        // s

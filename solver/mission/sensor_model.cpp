@@ -2,7 +2,13 @@
 
 #include <cmath>
 
+#include "solver/interval/rounding.h"
+
 namespace gesmi {
+
+double depth_bound(const SensorModel& model, double depth) {
+  return add_up(model.depth_absolute, mul_up(model.depth_relative, std::fabs(depth)));
+}
 
 const std::vector<SensorModelField>& sensor_model_fields() {
   static const std::vector<SensorModelField> fields = {

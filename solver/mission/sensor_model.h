@@ -66,6 +66,10 @@ struct SensorModel {
   std::string validate() const;
 };
 
+/// A depth reading's bound, depth_absolute + depth_relative |depth|, rounded up: the one
+/// formula for the solver's boxes and the importers' per-sample half-widths.
+double depth_bound(const SensorModel& model, double depth);
+
 /// One numeric field of the sensor model: its key (the HDF5 /model attribute, the YAML
 /// key, the docs/formats.md row), the member, its unit and meaning, and the mission
 /// file version that introduced it (older files take the default).

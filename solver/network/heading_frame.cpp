@@ -34,18 +34,24 @@ double turn_widening(double margin, double other, double own) {
 
 double speed_bound(const Mission& m) {
   // The DVL boxes of SensorBoxes::velocity(), in plain doubles: every term is
-  // non-negative, so the roundings to nearest of the few operations per sample (12 at
+  // non-negative, so the roundings to nearest of the few operations per sample (15 at
   // most) are covered by a relative 16 units in the last place, taken at the end, and
   // underflow by the smallest normal number.
   const std::vector<double>* readings[3] = {&m.vx, &m.vy, &m.vz};
   const std::vector<double>* widths[3] = {&m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz};
   double largest = 0.0, longest = 0.0;
   for (std::size_t k = 0; k < m.size(); ++k) {
-    const double frame = m.frame_scale_margin * (std::fabs(m.vx[k]) + std::fabs(m.vy[k]) + std::fabs(m.vz[k]));
+    double own[3], largest_l1 = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const double speed = std::fabs((*readings[i])[k]);
+      own[i] = widths[i]->empty() ? m.model.dvl_relative * speed + m.model.dvl_absolute : (*widths[i])[k];
+      largest_l1 += speed + own[i];
+    }
+    const double frame = m.frame_scale_margin * largest_l1;
     double squared = 0.0;
     for (int i = 0; i < 3; ++i) {
       const double speed = std::fabs((*readings[i])[k]);
-      const double bound = (widths[i]->empty() ? m.model.dvl_relative * speed + m.model.dvl_absolute : (*widths[i])[k]) + frame;
+      const double bound = own[i] + frame;
       squared += (speed + bound) * (speed + bound);
     }
     largest = std::max(largest, squared);  // readings are finite (validate_mission)

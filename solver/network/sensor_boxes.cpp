@@ -25,19 +25,24 @@ Interval SensorBoxes::heading(std::size_t k) const {
 Vec3I SensorBoxes::velocity(std::size_t k) const {
   // v ± (a |v| + b) per component (or the sample's own half-width), rounded up, plus
   // what the local tangent frame does to distances: Mission::frame_scale_margin times
-  // |vx| + |vy| + |vz| on every component, since the frame's distortion turns a
-  // velocity's error off its own axis (docs/model.md, "The local frame's scale").
-  const double frame = mul_up(m_.frame_scale_margin, add_up(add_up(std::fabs(m_.vx[k]), std::fabs(m_.vy[k])), std::fabs(m_.vz[k])));
-  const auto component = [&](const std::vector<double>& v, const std::vector<double>& hw) {
-    const double own = hw.empty() ? add_up(mul_up(model_.dvl_relative, std::fabs(v[k])), model_.dvl_absolute) : hw[k];
-    return Interval::around(v[k], add_up(own, frame));
-  };
-  return Vec3I(component(m_.vx, m_.half_widths.vx), component(m_.vy, m_.half_widths.vy),
-               component(m_.vz, m_.half_widths.vz));
+  // the box's largest |vx| + |vy| + |vz| on every component, since the frame's
+  // distortion turns a velocity's error off its own axis (docs/model.md, "The local
+  // frame's scale").
+  const std::vector<double>* readings[3] = {&m_.vx, &m_.vy, &m_.vz};
+  const std::vector<double>* widths[3] = {&m_.half_widths.vx, &m_.half_widths.vy, &m_.half_widths.vz};
+  double own[3], largest = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double v = std::fabs((*readings[i])[k]);
+    own[i] = widths[i]->empty() ? add_up(mul_up(model_.dvl_relative, v), model_.dvl_absolute) : (*widths[i])[k];
+    largest = add_up(largest, add_up(v, own[i]));
+  }
+  const double frame = mul_up(m_.frame_scale_margin, largest);
+  return Vec3I(Interval::around(m_.vx[k], add_up(own[0], frame)), Interval::around(m_.vy[k], add_up(own[1], frame)),
+               Interval::around(m_.vz[k], add_up(own[2], frame)));
 }
 
 Interval SensorBoxes::depth(std::size_t k) const {
-  const double bound = add_up(model_.depth_absolute, mul_up(model_.depth_relative, std::fabs(m_.depth[k])));
+  const double bound = depth_bound(model_, m_.depth[k]);
   return reading(m_.depth, m_.half_widths.depth, k, bound);
 }
 

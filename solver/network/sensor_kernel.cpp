@@ -69,7 +69,7 @@ inline void narrow_sin_cos(double s, double c, double r, Bounds& sin_box, Bounds
 
 struct VelocityModel {
   double relative, absolute;  // bound = relative |v| + absolute, unless given per sample
-  double frame;               // plus frame (|vx| + |vy| + |vz|) on every component
+  double frame;               // plus frame times the box's largest |vx| + |vy| + |vz|, on every component
   bool per_sample[3];
 };
 
@@ -81,12 +81,16 @@ struct VelocityModel {
   for (std::size_t j = 0; j < n; ++j) {
     Bounds sine[3], cosine[3], v[3];
     for (int a = 0; a < 3; ++a) narrow_sin_cos(in.sin[a][j], in.cos[a][j], in.radius[a][j], sine[a], cosine[a]);
-    const double frame =
-        vm.frame * ((std::fabs(in.velocity[0][j]) + std::fabs(in.velocity[1][j])) + std::fabs(in.velocity[2][j]));
+    double own[3], largest = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const double speed = std::fabs(in.velocity[i][j]);
+      own[i] = vm.per_sample[i] ? in.velocity_bound[i][j] : vm.relative * speed + vm.absolute;
+      largest = largest + (speed + own[i]);
+    }
+    const double frame = vm.frame * largest;
     for (int i = 0; i < 3; ++i) {
       const double value = in.velocity[i][j];
-      const double own = vm.per_sample[i] ? in.velocity_bound[i][j] : vm.relative * std::fabs(value) + vm.absolute;
-      const double bound = own + frame;
+      const double bound = own[i] + frame;
       v[i] = {(-value) + bound, value + bound};
     }
     // Rx(phi), then Ry(theta), then Rz(psi).

@@ -107,14 +107,16 @@ long double farthest_speed(const Mission& m) {
   const std::vector<double>* widths[3] = {&m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz};
   for (std::size_t k = 0; k < m.size(); ++k) {
     long double squared = 0.0L;
-    const long double frame = static_cast<long double>(m.frame_scale_margin) *
-                              (std::fabs(static_cast<long double>(m.vx[k])) + std::fabs(static_cast<long double>(m.vy[k])) +
-                               std::fabs(static_cast<long double>(m.vz[k])));
+    long double own[3], largest_l1 = 0.0L;
     for (int i = 0; i < 3; ++i) {
       const long double v = std::fabs(static_cast<long double>((*readings[i])[k]));
-      const long double bound =
-          (widths[i]->empty() ? static_cast<long double>(m.model.dvl_relative) * v + m.model.dvl_absolute : (*widths[i])[k]) +
-          frame;
+      own[i] = widths[i]->empty() ? static_cast<long double>(m.model.dvl_relative) * v + m.model.dvl_absolute : (*widths[i])[k];
+      largest_l1 += v + own[i];
+    }
+    const long double frame = static_cast<long double>(m.frame_scale_margin) * largest_l1;
+    for (int i = 0; i < 3; ++i) {
+      const long double v = std::fabs(static_cast<long double>((*readings[i])[k]));
+      const long double bound = own[i] + frame;
       squared += (v + bound) * (v + bound);
     }
     largest = std::max(largest, std::sqrt(squared));

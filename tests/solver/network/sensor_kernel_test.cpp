@@ -136,8 +136,9 @@ TEST(SensorKernel, WorldVelocityBoxesHoldRotatedVelocitiesOfTheBoxes) {
     const long double angle[3] = {m.roll[k], m.pitch[k], m.heading[k]};
     const long double angle_width[3] = {h.roll[k], h.pitch[k], h.heading[k]};
     const long double velocity[3] = {m.vx[k], m.vy[k], m.vz[k]};
-    // The frame's scale: its margin times |vx| + |vy| + |vz| on each axis.
-    const long double frame = m.frame_scale_margin * (std::fabs(velocity[0]) + std::fabs(velocity[1]) + std::fabs(velocity[2]));
+    // The frame's scale: its margin times the box's largest |vx| + |vy| + |vz| on each axis.
+    const long double frame = m.frame_scale_margin * (std::fabs(velocity[0]) + h.vx[k] + std::fabs(velocity[1]) + h.vy[k] +
+                                                       std::fabs(velocity[2]) + h.vz[k]);
     const long double velocity_width[3] = {h.vx[k] + frame, h.vy[k] + frame, h.vz[k] + frame};
     // The 64 corners of the sample's box, then 32 random points inside it.
     for (int point = 0; point < 96; ++point) {
