@@ -121,8 +121,14 @@ std::string nmea_sentence(const std::string& body) {
   return "$" + body + tail;
 }
 
-void export_mission_logger(const Mission& m, const std::string& folder, const LoggerExportOptions& o) {
+void export_mission_logger(const Mission& m, const std::string& source, const std::string& folder,
+                           const LoggerExportOptions& o) {
   if (o.dvl_every == 0 || o.depth_every == 0) throw FormatError("--dvl-every and --depth-every must be at least 1");
+  for (const NavChannel& c : nav_channels())
+    if (!(m.half_widths.*c.half_widths).empty())
+      throw FormatError(source + ": /nav/half_widths/" + std::string(c.name) + ": the mission bounds its " + std::string(c.name) +
+                        " per sample, which a logger export cannot carry (its import would take the model's bounds): "
+                        "export it with --format csv");
   check_export_folder(folder);
   const fs::path target = fs::path(folder).lexically_normal();
   std::error_code ec;

@@ -33,7 +33,10 @@ struct LoggerExportOptions {
   std::optional<std::pair<double, double>> dvl_gap;  // no DVL reading in [from, to] s
 };
 
-void export_mission_logger(const Mission& mission, const std::string& folder, const LoggerExportOptions& options);
+/// `source` names the mission in errors (a mission with per-sample half-widths is
+/// refused: the log cannot carry them).
+void export_mission_logger(const Mission& mission, const std::string& source, const std::string& folder,
+                           const LoggerExportOptions& options);
 
 /// "hhmmss.sss" and the checksummed sentence "$<body>*HH" of NMEA 0183.
 std::string nmea_sentence(const std::string& body);

@@ -1,5 +1,6 @@
 #include "io/files/mission_file.h"
 
+#include <array>
 #include <cmath>
 
 #include "io/output/atomic_output.h"
@@ -27,6 +28,17 @@ constexpr H5FormatVersions kVersions{.current = 3, .oldest = 1, .when_absent = 0
 std::string half_width_dataset(const NavChannel& c) { return "/nav/half_widths/" + std::string(c.name); }
 
 std::string row_text(std::size_t row) { return "row " + std::to_string(row); }
+
+// The root attributes of Mission::conversion_margins (absent: 0).
+const std::array<std::pair<std::string, double Mission::ConversionMargins::*>, 4>& conversion_margin_attributes() {
+  static const std::array<std::pair<std::string, double Mission::ConversionMargins::*>, 4> names = {{
+      {"conversion_margin_roll", &Mission::ConversionMargins::roll},
+      {"conversion_margin_pitch", &Mission::ConversionMargins::pitch},
+      {"conversion_margin_heading", &Mission::ConversionMargins::heading},
+      {"conversion_margin_dvl", &Mission::ConversionMargins::dvl},
+  }};
+  return names;
+}
 
 [[noreturn]] void bad(const std::string& source, const std::string& dataset, const std::string& what) {
   throw FormatError(source + ": " + dataset + ": " + what);
@@ -163,6 +175,12 @@ Mission read_mission(const std::string& path, TruthReading truth) {
       throw FormatError(path + ": /: epoch_utc: expected a UTC time YYYY-MM-DDThh:mm:ssZ, found " + quoted_input(*epoch));
     m.epoch = parsed.time->seconds;
   }
+  for (const auto& [name, member] : conversion_margin_attributes())
+    if (const auto margin = f.double_attribute("/", name)) {
+      if (!std::isfinite(*margin) || *margin < 0.0 || *margin > 1e-6)
+        throw FormatError(path + ": /: " + name + ": expected a rounding margin in [0, 1e-6], found " + format_number(*margin));
+      m.conversion_margins.*member = *margin;
+    }
 
   // Navigation, read column by column into the flat arrays (one copy of the data).
   m.time = f.read_doubles("/nav/time", 1);
@@ -285,6 +303,8 @@ void write_mission(const Mission& m, const std::string& path) {
     f.set_attribute("/", "origin_longitude", m.origin.longitude);
     f.set_attribute("/", "mine_count", static_cast<std::int64_t>(m.mine_count));
     if (m.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*m.epoch));
+    for (const auto& [name, member] : conversion_margin_attributes())
+      if (m.conversion_margins.*member != 0.0) f.set_attribute("/", name, m.conversion_margins.*member);
     write_model_attributes(f, "/model", m.model);
     f.close();
   }
@@ -292,7 +312,46 @@ void write_mission(const Mission& m, const std::string& path) {
 }
 
 void merge_model_config(Mission& m, const std::string& path) {
+  const SensorModel before = m.model;
   merge_sensor_model_yaml(path, m.model);
+  // Per-sample half-widths replace the model's bound of their channel (a log's own,
+  // or computed between readings at import from the model then): a --config that
+  // changes that bound would change nothing, silently.
+  struct Bounded {
+    double SensorModel::*key;
+    const char* name;
+    std::vector<const std::vector<double>*> half_widths;
+  };
+  const auto& h = m.half_widths;
+  const Bounded bounded[] = {
+      {&SensorModel::roll, "roll", {&h.roll}},
+      {&SensorModel::pitch, "pitch", {&h.pitch}},
+      {&SensorModel::heading, "heading", {&h.heading}},
+      {&SensorModel::max_attitude_rate, "max_attitude_rate", {&h.roll, &h.pitch, &h.heading}},
+      {&SensorModel::dvl_relative, "dvl_relative", {&h.vx, &h.vy, &h.vz}},
+      {&SensorModel::dvl_absolute, "dvl_absolute", {&h.vx, &h.vy, &h.vz}},
+      {&SensorModel::depth_absolute, "depth_absolute", {&h.depth}},
+      {&SensorModel::depth_relative, "depth_relative", {&h.depth}},
+      {&SensorModel::max_depth_rate, "max_depth_rate", {&h.depth}},
+      {&SensorModel::altitude, "altitude", {&h.altitude}},
+      {&SensorModel::max_altitude_rate, "max_altitude_rate", {&h.altitude}},
+  };
+  for (const Bounded& b : bounded) {
+    if (m.model.*b.key == before.*b.key) continue;
+    for (const std::vector<double>* widths : b.half_widths)
+      if (!widths->empty())
+        throw FormatError(path + ": " + b.name + ": this mission bounds that sensor per sample (its log's bounds, or "
+                          "enclosures between readings made at import), which --config cannot change: import the log "
+                          "again with --config");
+  }
+  // A bound the config replaces gets back what a unit conversion at import added to it.
+  const std::pair<double SensorModel::*, double> margins[] = {
+      {&SensorModel::roll, m.conversion_margins.roll},
+      {&SensorModel::pitch, m.conversion_margins.pitch},
+      {&SensorModel::heading, m.conversion_margins.heading},
+      {&SensorModel::dvl_absolute, m.conversion_margins.dvl}};
+  for (const auto& [key, margin] : margins)
+    if (m.model.*key != before.*key) m.model.*key = add_up(m.model.*key, margin);
   fill_local_gps(m, path);
 }
 

@@ -99,12 +99,17 @@ MappedNavLog read_mapped_nav(std::istream& in, const std::string& name, const Co
   model = input_model;
   double* angle_bound[3] = {&model.roll, &model.pitch, &model.heading};
   double dvl_margin = 0.0;
+  double* angle_margin[3] = {&out.conversion_margins.roll, &out.conversion_margins.pitch, &out.conversion_margins.heading};
   for (const int c : {roll, pitch, heading})
-    if (factor[c] != 1.0) *angle_bound[c] = add_up(*angle_bound[c], conversion_margin(series[c].readings.value));
+    if (factor[c] != 1.0) {
+      *angle_margin[c] = conversion_margin(series[c].readings.value);
+      *angle_bound[c] = add_up(*angle_bound[c], *angle_margin[c]);
+    }
   // The DVL bound is one for the three components: it takes the largest margin.
   for (const int c : {vx, vy, vz})
     if (factor[c] != 1.0) dvl_margin = std::max(dvl_margin, conversion_margin(series[c].readings.value));
   model.dvl_absolute = add_up(model.dvl_absolute, dvl_margin);
+  out.conversion_margins.dvl = dvl_margin;
 
   // Gaps: the longest time without a reading, inside the grid's span and at its ends.
   const double max_gap = map.max_gap.value_or(kDefaultMaxGap);

@@ -31,6 +31,7 @@ struct MappedNavLog {
   NavLog log;                         // on the grid
   std::optional<std::int64_t> epoch;  // UTC seconds of t = 0, from absolute times
   SensorModel model;                  // the model, bounds widened by unit conversion
+  Mission::ConversionMargins conversion_margins;  // what the widening added
   std::vector<std::string> notes;     // what the import did, one line each, for the summary
 };
 

@@ -119,6 +119,7 @@ Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs, std::
       MappedNavLog mapped = read_mapped_nav(in, nav_csv, read_column_map(inputs.map, nav_map_schema(), true), m.model, m.epoch);
       nav = std::move(mapped.log);
       m.model = mapped.model;
+      m.conversion_margins = mapped.conversion_margins;
       m.epoch = mapped.epoch;
       for (std::string& note : mapped.notes) notes.push_back(nav_csv + ": " + note);
     }

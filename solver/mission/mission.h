@@ -94,6 +94,13 @@ struct Mission {
   // Number of mines K (mine indices are 0..K-1).
   int mine_count = 0;
 
+  // What unit conversions at import added to the model's bounds (rad; m/s for the DVL:
+  // io/imports/import_mapped_nav.h), kept so that a --config replacing one of those
+  // bounds adds it again.
+  struct ConversionMargins {
+    double roll = 0.0, pitch = 0.0, heading = 0.0, dvl = 0.0;
+  } conversion_margins;
+
   GeoOrigin origin;
   // UTC time of t = 0 in whole seconds since 1970-01-01 (Unix time), when the log gave
   // absolute times or the import was told it (--epoch).

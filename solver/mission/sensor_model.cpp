@@ -101,6 +101,9 @@ std::string SensorModel::validate() const {
     if (!std::isfinite(value) || value < 0.0) return std::string(f.key) + " must be a finite non-negative number";
   }
   if (sonar_max_range <= 0.0) return "sonar_max_range must be positive";
+  // The altitude is the floor's depth minus the robot's: over a flat floor it changes
+  // exactly as fast as the depth.
+  if (max_altitude_rate < max_depth_rate) return "max_altitude_rate must be at least max_depth_rate";
   return {};
 }
 

@@ -73,3 +73,43 @@ def test_results_and_exports_carry_the_logs_epoch(tmp_path):
     assert r.returncode == 0, r.stderr
     with open(tmp_path / "csv" / "import-command.txt") as f:
         assert "--epoch 2026-05-14T08:00:00Z" in f.read()
+
+
+def test_config_cannot_silently_miss_bounds_fixed_at_import(tmp_path):
+    import h5py
+
+    for name in os.listdir(SAMPLE):
+        shutil.copy(os.path.join(SAMPLE, name), tmp_path)
+    with open(tmp_path / "import-command.txt") as f:
+        args = shlex.split(f.read())[1:]
+    gesmi_bin = os.path.abspath(GESMI) if os.sep in GESMI else GESMI
+    assert subprocess.run([gesmi_bin, *args], cwd=tmp_path, capture_output=True).returncode == 0
+    # The sample's depth is read at 1 Hz: its bounds are per sample, made at import.
+    (tmp_path / "deeper.yaml").write_text("depth_absolute: 3\n")
+    r = subprocess.run([gesmi_bin, "solve", "mission.h5", "--config", "deeper.yaml", "-o", "r.h5"], cwd=tmp_path,
+                       capture_output=True, text=True)
+    assert r.returncode == 2 and "depth_absolute" in r.stderr and "import the log again" in r.stderr, r.stderr
+    assert not (tmp_path / "r.h5").exists()
+    # Its heading is in degrees: a heading bound from --config gets the conversion's margin back.
+    (tmp_path / "heading.yaml").write_text("heading: 0.01\n")
+    r = subprocess.run([gesmi_bin, "solve", "mission.h5", "--config", "heading.yaml", "-o", "r.h5"], cwd=tmp_path,
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    with h5py.File(tmp_path / "mission.h5") as f:
+        margin = f.attrs["conversion_margin_heading"]
+    with h5py.File(tmp_path / "r.h5") as f:
+        heading = f["/model"].attrs["heading"]
+    assert 0 < margin < 1e-13 and 0.01 < heading <= 0.01 + 2 * margin
+
+
+def test_a_logger_export_refuses_per_sample_bounds_it_cannot_carry(tmp_path):
+    for name in os.listdir(SAMPLE):
+        shutil.copy(os.path.join(SAMPLE, name), tmp_path)
+    with open(tmp_path / "import-command.txt") as f:
+        args = shlex.split(f.read())[1:]
+    gesmi_bin = os.path.abspath(GESMI) if os.sep in GESMI else GESMI
+    assert subprocess.run([gesmi_bin, *args], cwd=tmp_path, capture_output=True).returncode == 0
+    r = subprocess.run([gesmi_bin, "export", "mission.h5", "--format", "logger", "-o", "again"], cwd=tmp_path,
+                       capture_output=True, text=True)
+    assert r.returncode == 2 and "mission.h5: /nav/half_widths/depth" in r.stderr, r.stderr
+    assert not (tmp_path / "again").exists()

@@ -78,7 +78,7 @@ int run_export(std::span<const std::string> args) {
       o.dvl_gap = {parse_double("--dvl-gap", text.substr(0, colon)), parse_double("--dvl-gap", text.substr(colon + 1))};
     }
     outputs.prepare_folder(output);
-    io::export_mission_logger(m, output, o);
+    io::export_mission_logger(m, v["mission"].as<std::string>(), output, o);
     outputs.commit();
     std::printf("wrote %s/: log.csv (%zu rows), map.yaml, gps.nmea (%zu fixes), marks.csv (%zu), marks_map.yaml, model.yaml%s%s, "
                 "import-command.txt\n",
