@@ -170,10 +170,9 @@ Mission read_mission(const std::string& path, TruthReading truth) {
   m.mine_count = static_cast<int>(*mines);
   m.model = read_model_attributes(f, "/model", version);
   if (const auto epoch = f.string_attribute("/", "epoch_utc")) {
-    const ParsedTime parsed = parse_iso8601(*epoch);
-    if (!parsed.time || parsed.time->fraction != 0.0)
+    m.epoch = parse_epoch_utc(*epoch);
+    if (!m.epoch)
       throw FormatError(path + ": /: epoch_utc: expected a UTC time YYYY-MM-DDThh:mm:ssZ, found " + quoted_input(*epoch));
-    m.epoch = parsed.time->seconds;
   }
   for (const auto& [name, member] : conversion_margin_attributes())
     if (const auto margin = f.double_attribute("/", name)) {

@@ -257,10 +257,9 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
   const std::int64_t mark_count = integer("mark_count", 0, static_cast<std::int64_t>(kMaxDatasetValues));
   r.version = text("gesmi_version");
   if (const auto epoch = f.string_attribute("/", "epoch_utc")) {
-    const ParsedTime parsed = parse_iso8601(*epoch);
-    if (!parsed.time || parsed.time->fraction != 0.0 || r.format_version < 4)
+    r.epoch = parse_epoch_utc(*epoch);
+    if (!r.epoch || r.format_version < 4)
       bad(f, "/", "attribute epoch_utc is not a UTC time YYYY-MM-DDThh:mm:ssZ of a format-4 result");
-    r.epoch = parsed.time->seconds;
   }
   if (verified) {
     s.model = read_model_attributes(f, "/model", r.format_version >= 4 ? 3 : 2);  // the model keys of its mission format

@@ -112,6 +112,13 @@ ParsedTime parse_iso8601(std::string_view text, std::optional<int> default_offse
   return {UtcTime{seconds, fraction}, {}};
 }
 
+std::optional<std::int64_t> parse_epoch_utc(std::string_view text, std::string* why) {
+  const ParsedTime parsed = parse_iso8601(text);
+  if (parsed.time && parsed.time->fraction == 0.0) return parsed.time->seconds;
+  if (why) *why = parsed.time ? "the epoch is a whole second" : parsed.error;
+  return std::nullopt;
+}
+
 ParsedTime parse_epoch_seconds(std::string_view text) {
   // Whole and fractional parts apart: a double of 1.7e9 s keeps only 0.2 µs.
   const std::size_t dot = text.find('.');

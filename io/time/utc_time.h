@@ -32,6 +32,10 @@ struct ParsedTime {
 /// and is an error otherwise.
 ParsedTime parse_iso8601(std::string_view text, std::optional<int> default_offset_seconds = std::nullopt);
 
+/// A mission's epoch: an ISO 8601 time in whole seconds ("2026-05-14T08:00:00Z"), as
+/// seconds since 1970; nullopt, with `why` set, otherwise.
+std::optional<std::int64_t> parse_epoch_utc(std::string_view text, std::string* why = nullptr);
+
 /// Seconds since 1970 as text (decimal, e.g. "1717245296.25"), not before 1970 nor
 /// after 2200.
 ParsedTime parse_epoch_seconds(std::string_view text);

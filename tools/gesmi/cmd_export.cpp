@@ -59,10 +59,10 @@ int run_export(std::span<const std::string> args) {
     io::LoggerExportOptions o;
     o.epoch = m.epoch.value_or(kDefaultLoggerEpoch);
     if (v.count("epoch")) {
-      const io::ParsedTime parsed = io::parse_iso8601(v["epoch"].as<std::string>());
-      if (!parsed.time) throw UsageError("--epoch: " + parsed.error);
-      if (parsed.time->fraction != 0.0) throw UsageError("--epoch: give the UTC time of t = 0 in whole seconds");
-      o.epoch = parsed.time->seconds;
+      std::string why;
+      const auto epoch = io::parse_epoch_utc(v["epoch"].as<std::string>(), &why);
+      if (!epoch) throw UsageError("--epoch: expected the UTC time of t = 0 in whole seconds, like 2026-05-14T08:00:00Z (" + why + ")");
+      o.epoch = *epoch;
     }
     const auto count = [&](const char* name) {
       const long long n = parse_integer(std::string("--") + name, v[name].as<std::string>());

@@ -37,12 +37,10 @@ std::optional<int> parse_mines(const po::variables_map& v) {
 
 std::optional<std::int64_t> parse_epoch(const po::variables_map& v) {
   if (!v.count("epoch")) return std::nullopt;
-  const std::string text = v["epoch"].as<std::string>();
-  const io::ParsedTime parsed = io::parse_iso8601(text);
-  if (!parsed.time || parsed.time->fraction != 0.0)
-    throw UsageError("--epoch: expected the UTC time of t = 0 in whole seconds, like 2026-05-14T08:00:00Z" +
-                     (parsed.error.empty() ? std::string() : " (" + parsed.error + ")"));
-  return parsed.time->seconds;
+  std::string why;
+  const auto epoch = io::parse_epoch_utc(v["epoch"].as<std::string>(), &why);
+  if (!epoch) throw UsageError("--epoch: expected the UTC time of t = 0 in whole seconds, like 2026-05-14T08:00:00Z (" + why + ")");
+  return epoch;
 }
 
 std::optional<std::int64_t> parse_date(const po::variables_map& v) {

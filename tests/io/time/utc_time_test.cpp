@@ -98,6 +98,12 @@ TEST(UtcTime, EpochSecondsKeepTheirFraction) {
   EXPECT_EQ(p.time->since(1778745600), 0.000001);  // a double of 1.7e9 s alone keeps 0.2 us
   for (const char* bad : {"", "-1", "-0.5", "+5", "1e9", "17787456OO", "1778745600.", "1778745600.5.5", "99999999999", "nan"})
     EXPECT_FALSE(parse_epoch_seconds(bad).time) << bad;
+  EXPECT_EQ(parse_epoch_utc("2026-05-14T10:00:00+02:00"), 1778745600);
+  std::string why;
+  EXPECT_FALSE(parse_epoch_utc("2026-05-14T08:00:00.5Z", &why));
+  EXPECT_EQ(why, "the epoch is a whole second");
+  EXPECT_FALSE(parse_epoch_utc("2026-05-14", &why));
+  EXPECT_FALSE(why.empty());
   EXPECT_EQ(parse_utc_offset("UTC"), 0);
   EXPECT_EQ(parse_utc_offset("-05:30"), -19800);
   EXPECT_FALSE(parse_utc_offset("+5"));
