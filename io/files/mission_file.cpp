@@ -343,6 +343,10 @@ void merge_model_config(Mission& m, const std::string& path) {
                           "enclosures between readings made at import), which --config cannot change: import the log "
                           "again with --config");
   }
+  if (const auto gap = longest_gap(m.time); gap && m.model.step_model == StepModel::sample && before.step_model != StepModel::sample)
+    throw FormatError(path + ": step_model: 'sample' cannot cross the mission's gap of " +
+                      format_number(m.time[*gap + 1] - m.time[*gap]) + " s at t = " + format_number(m.time[*gap]) +
+                      " s soundly (it holds a sample's box over the whole step): use trapezoid or rate-hull");
   // A bound the config replaces gets back what a unit conversion at import added to it.
   const std::pair<double SensorModel::*, double> margins[] = {
       {&SensorModel::roll, m.conversion_margins.roll},

@@ -180,12 +180,9 @@ MappedNavLog read_mapped_nav(std::istream& in, const std::string& name, const Co
     }
   // The paper's sample convention holds sample k's box over its whole step: across a
   // DVL gap that is far from true (docs/model.md, "Gaps").
-  std::vector<double> steps(grid.size() - 1);
-  for (std::size_t k = 1; k < grid.size(); ++k) steps[k - 1] = grid[k] - grid[k - 1];
-  std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
-  if (model.step_model == StepModel::sample && longest > 2.0 * steps[steps.size() / 2])
-    throw FormatError(name + ":" + std::to_string(grid_line[longest_at]) + ": vx: a DVL gap of " + seconds_text(longest) +
-                      " (from line " + std::to_string(grid_line[longest_at - 1]) +
+  if (const auto gap = longest_gap(grid); gap && model.step_model == StepModel::sample)
+    throw FormatError(name + ":" + std::to_string(grid_line[*gap + 1]) + ": vx: a DVL gap of " +
+                      seconds_text(grid[*gap + 1] - grid[*gap]) + " (from line " + std::to_string(grid_line[*gap]) +
                       "), which the step model 'sample' cannot cross soundly: use trapezoid or rate-hull (step_model in --config)");
   out.notes.push_back("grid: the " + std::to_string(grid.size()) + " rows with a DVL reading, of " + std::to_string(rows) +
                       "; longest step " + seconds_text(longest) + " (lines " + std::to_string(grid_line[longest_at - 1]) + "-" +

@@ -1,5 +1,6 @@
 #include "solver/mission/mission.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace gesmi {
@@ -22,6 +23,20 @@ const NavChannel& nav_channel(std::string_view name) {
   for (const NavChannel& c : nav_channels())
     if (c.name == name) return c;
   throw std::logic_error("no navigation channel " + std::string(name));
+}
+
+std::optional<std::size_t> longest_gap(const std::vector<double>& time) {
+  if (time.size() < 2) return std::nullopt;
+  std::vector<double> steps(time.size() - 1);
+  std::size_t longest = 0;
+  for (std::size_t k = 0; k + 1 < time.size(); ++k) {
+    steps[k] = time[k + 1] - time[k];
+    if (steps[k] > steps[longest]) longest = k;
+  }
+  const double step = steps[longest];
+  std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
+  if (step > 2.0 * steps[steps.size() / 2]) return longest;
+  return std::nullopt;
 }
 
 }  // namespace gesmi

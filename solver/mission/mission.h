@@ -46,6 +46,11 @@ struct NavChannel {
   std::vector<double> NavHalfWidths::*half_widths;
 };
 
+/// The step k (from time[k] to time[k + 1]) of a gap in the readings: the longest step
+/// when it is more than twice the median step, else nullopt. The step model 'sample'
+/// cannot cross one soundly (docs/model.md, "Gaps").
+std::optional<std::size_t> longest_gap(const std::vector<double>& time);
+
 /// The eight channels, in the navigation CSV's column order.
 const std::array<NavChannel, 8>& nav_channels();
 /// The channel of that name (one of nav_channels()).

@@ -100,6 +100,12 @@ def test_config_cannot_silently_miss_bounds_fixed_at_import(tmp_path):
     with h5py.File(tmp_path / "r.h5") as f:
         heading = f["/model"].attrs["heading"]
     assert 0 < margin < 1e-13 and 0.01 < heading <= 0.01 + 2 * margin
+    # The sample's 30 s DVL gap: the paper's sample step model cannot cross it.
+    (tmp_path / "sample.yaml").write_text("step_model: sample\n")
+    r = subprocess.run([gesmi_bin, "solve", "mission.h5", "--config", "sample.yaml", "-o", "r2.h5"], cwd=tmp_path,
+                       capture_output=True, text=True)
+    assert r.returncode == 2 and "step_model: 'sample' cannot cross" in r.stderr, r.stderr
+    assert not (tmp_path / "r2.h5").exists()
 
 
 def test_a_logger_export_refuses_per_sample_bounds_it_cannot_carry(tmp_path):
