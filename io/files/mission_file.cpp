@@ -311,8 +311,13 @@ void write_mission(const Mission& m, const std::string& path) {
 }
 
 void merge_model_config(Mission& m, const std::string& path) {
-  const SensorModel before = m.model;
-  merge_sensor_model_yaml(path, m.model);
+  SensorModel model = m.model;
+  merge_sensor_model_yaml(path, model);
+  change_model(m, model, path);
+}
+
+void change_model(Mission& m, SensorModel model, const std::string& path) {
+  const SensorModel& before = m.model;
   // Per-sample half-widths replace the model's bound of their channel (a log's own,
   // or computed between readings at import from the model then): a --config that
   // changes that bound would change nothing, silently.
@@ -336,14 +341,14 @@ void merge_model_config(Mission& m, const std::string& path) {
       {&SensorModel::max_altitude_rate, "max_altitude_rate", {&h.altitude}},
   };
   for (const Bounded& b : bounded) {
-    if (m.model.*b.key == before.*b.key) continue;
+    if (model.*b.key == before.*b.key) continue;
     for (const std::vector<double>* widths : b.half_widths)
       if (!widths->empty())
         throw FormatError(path + ": " + b.name + ": this mission bounds that sensor per sample (its log's bounds, or "
                           "enclosures between readings made at import), which --config cannot change: import the log "
                           "again with --config");
   }
-  if (const auto gap = longest_gap(m.time); gap && m.model.step_model == StepModel::sample && before.step_model != StepModel::sample)
+  if (const auto gap = longest_gap(m.time); gap && model.step_model == StepModel::sample && before.step_model != StepModel::sample)
     throw FormatError(path + ": step_model: 'sample' cannot cross the mission's gap of " +
                       format_number(m.time[*gap + 1] - m.time[*gap]) + " s at t = " + format_number(m.time[*gap]) +
                       " s soundly (it holds a sample's box over the whole step): use trapezoid or rate-hull");
@@ -354,7 +359,8 @@ void merge_model_config(Mission& m, const std::string& path) {
       {&SensorModel::heading, m.conversion_margins.heading},
       {&SensorModel::dvl_absolute, m.conversion_margins.dvl}};
   for (const auto& [key, margin] : margins)
-    if (m.model.*key != before.*key) m.model.*key = add_up(m.model.*key, margin);
+    if (model.*key != before.*key) model.*key = add_up(model.*key, margin);
+  m.model = model;
   fill_local_gps(m, path);
 }
 

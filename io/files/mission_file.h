@@ -23,7 +23,14 @@ void write_mission(const Mission& mission, const std::string& path);
 void validate_mission(const Mission& mission, const std::string& source);
 
 /// `--config`: merges the sensor model YAML at `path` over the mission's model, then
-/// recomputes what derives from the model (the fixes' boxes in the local frame).
+/// change_model().
 void merge_model_config(Mission& mission, const std::string& path);
+
+/// Replaces the mission's model (a --config, a key set from Python): refuses a change
+/// that per-sample half-widths would ignore, or the step model 'sample' across a gap;
+/// adds back the import's unit-conversion margin to a bound it replaces; recomputes what
+/// derives from the model (the fixes' boxes in the local frame). FormatError naming
+/// `source`; the mission is unchanged then.
+void change_model(Mission& mission, SensorModel model, const std::string& source);
 
 }  // namespace gesmi::io

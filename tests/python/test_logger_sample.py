@@ -119,3 +119,31 @@ def test_a_logger_export_refuses_per_sample_bounds_it_cannot_carry(tmp_path):
                        capture_output=True, text=True)
     assert r.returncode == 2 and "mission.h5: /nav/half_widths/depth" in r.stderr, r.stderr
     assert not (tmp_path / "again").exists()
+
+
+def test_the_python_model_mapping_obeys_the_same_rules_as_config(tmp_path):
+    for name in os.listdir(SAMPLE):
+        shutil.copy(os.path.join(SAMPLE, name), tmp_path)
+    with open(tmp_path / "import-command.txt") as f:
+        args = shlex.split(f.read())[1:]
+    gesmi_bin = os.path.abspath(GESMI) if os.sep in GESMI else GESMI
+    assert subprocess.run([gesmi_bin, *args], cwd=tmp_path, capture_output=True).returncode == 0
+    m = gesmi.read_mission(str(tmp_path / "mission.h5"))
+    depth = m.model["depth_absolute"]
+    try:
+        m.model["depth_absolute"] = 3.0  # the depth is bounded per sample (read at 1 Hz)
+        raise AssertionError("accepted")
+    except gesmi.FormatError as e:
+        assert "depth_absolute" in str(e)
+    assert m.model["depth_absolute"] == depth  # unchanged
+    try:
+        m.model["step_model"] = "sample"  # the 30 s DVL gap
+        raise AssertionError("accepted")
+    except gesmi.FormatError as e:
+        assert "cannot cross" in str(e)
+    m.model["heading"] = 0.01  # in degrees in the log: the margin comes back
+    assert 0.01 < m.model["heading"] < 0.01 + 1e-13
+    before = gesmi.solve(m).north
+    m.model["gps_metres"] = 30.0  # and the fixes' boxes follow at once
+    after = gesmi.solve(m).north
+    assert np.all(after[:, 0] <= before[:, 0]) and np.any(after[:, 1] - after[:, 0] > before[:, 1] - before[:, 0] + 1.0)

@@ -24,22 +24,24 @@ struct ModelView {
       if (f.key == key) return py::float_(model->*f.member);
     throw py::key_error(key);
   }
+  // Through io::change_model, as a --config: the same refusals, margins and GPS boxes.
   void set(const std::string& key, const py::object& value) {
+    SensorModel updated = *model;
+    bool known = false;
     for (const SensorModelChoice& c : sensor_model_choices())
       if (c.key == key) {
-        if (!c.set(*model, py::cast<std::string>(value)))
+        if (!c.set(updated, py::cast<std::string>(value)))
           throw io::FormatError("sensor model: " + key + ": expected " + choice_names(c));
-        return;
+        known = true;
       }
     for (const SensorModelField& f : sensor_model_fields())
       if (f.key == key) {
-        SensorModel updated = *model;
         updated.*f.member = py::cast<double>(value);
-        if (const std::string why = updated.validate(); !why.empty()) throw io::FormatError("sensor model: " + why);
-        *model = updated;
-        return;
+        known = true;
       }
-    throw py::key_error(key);
+    if (!known) throw py::key_error(key);
+    if (const std::string why = updated.validate(); !why.empty()) throw io::FormatError("sensor model: " + why);
+    io::change_model(owner.cast<Mission&>(), updated, "sensor model");
   }
   std::vector<std::string> keys() const {
     std::vector<std::string> k;
