@@ -156,7 +156,6 @@ MappedNavLog read_mapped_nav(std::istream& in, const std::string& name, const Co
       s.readings.half_width.push_back(e.channel == depth ? depth_bound(model, v)
                                       : e.channel == altitude ? model.altitude
                                                               : *angle_bound[e.channel]);
-    // A channel read on every grid row keeps the model's bounds (no half-widths).
     ChannelAtGrid at = enclose_between_readings(s.readings, grid, e.rate, e.channel == heading);
     const std::string_view channel = nav_map_schema()[e.channel].name;
     if (at.conflict)
@@ -166,6 +165,7 @@ MappedNavLog read_mapped_nav(std::istream& in, const std::string& name, const Co
                         " s differ by more than the sensor bounds and the model's rate bound allow (check the readings or the bounds in --config)");
     const std::size_t own = static_cast<std::size_t>(std::count(at.own_reading.begin(), at.own_reading.end(), 1));
     log.*e.values = std::move(at.value);
+    // A channel read on every grid row keeps the model's bounds (no half-widths).
     if (own < grid.size()) {
       log.half_widths.*e.half_widths = std::move(at.half_width);
       between += (between.empty() ? "" : ", ") + std::string(channel) + " at " + std::to_string(grid.size() - own);

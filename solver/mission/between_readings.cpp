@@ -41,27 +41,26 @@ ChannelAtGrid enclose_between_readings(const ChannelReadings& r, std::span<const
       const std::size_t before = after - 1;
       const Interval from_before = widened(r, before, t, rate);
       Interval from_after = widened(r, after, t, rate);
-      if (angle) {
-        // Two headings 2 pi apart are the same reading. The true change between the
-        // two readings is at most rate (t_after - t_before), and each reading is off
-        // by at most its half-width: when that sum is below 3 (< pi), only the branch of
-        // the reading after closest to the one before is within reach. Otherwise
-        // several are, and only the narrower one-sided box is kept, alone.
-        const double reach = add_up(add_up(mul_up(rate, sub_up(r.time[after], r.time[before])), r.half_width[before]),
-                                    r.half_width[after]);
-        if (reach >= 3.0) {
-          box = from_before.width() <= from_after.width() ? from_before : from_after;
-          out.value[k] = box.mid();
-          out.half_width[k] = box.rad();
-          continue;
+      // Two headings 2 pi apart are the same reading. The true change between the two
+      // readings is at most rate (t_after - t_before), and each reading is off by at
+      // most its half-width: when that sum is below 3 (< pi), only the branch of the
+      // reading after closest to the one before is within reach. Otherwise several
+      // are, and only the narrower one-sided box is kept, alone.
+      const bool several_branches =
+          angle && add_up(add_up(mul_up(rate, sub_up(r.time[after], r.time[before])), r.half_width[before]),
+                          r.half_width[after]) >= 3.0;
+      if (several_branches) {
+        box = from_before.width() <= from_after.width() ? from_before : from_after;
+      } else {
+        if (angle) {
+          const double turns = std::round((r.value[before] - r.value[after]) / (2.0 * std::numbers::pi));
+          if (turns != 0.0) from_after = from_after + Interval(turns) * Interval::two_pi();
         }
-        const double turns = std::round((r.value[before] - r.value[after]) / (2.0 * std::numbers::pi));
-        if (turns != 0.0) from_after = from_after + Interval(turns) * Interval::two_pi();
-      }
-      box = intersect(from_before, from_after);
-      if (box.is_empty()) {
-        out.conflict = ChannelAtGrid::Conflict{k, before, after};
-        return out;
+        box = intersect(from_before, from_after);
+        if (box.is_empty()) {
+          out.conflict = ChannelAtGrid::Conflict{k, before, after};
+          return out;
+        }
       }
     }
     out.value[k] = box.mid();

@@ -12,15 +12,27 @@ import gesmi
 from conftest import GESMI
 
 SAMPLE = os.path.join(os.path.dirname(__file__), "..", "..", "missions", "logger")
+GESMI_BIN = os.path.abspath(GESMI) if os.sep in GESMI else GESMI  # the tests run it from other folders
+
+
+def run_import_command(folder):
+    """Copies the sample into folder and runs its import-command.txt there."""
+    for name in os.listdir(SAMPLE):
+        shutil.copy(os.path.join(SAMPLE, name), folder)
+    with open(folder / "import-command.txt") as f:
+        args = shlex.split(f.read())[1:]
+    return subprocess.run([GESMI_BIN, *args], cwd=folder, capture_output=True, text=True)
+
+
+def import_sample(folder):
+    """The sample imported into folder/mission.h5; returns the gesmi binary."""
+    r = run_import_command(folder)
+    assert r.returncode == 0, r.stderr
+    return GESMI_BIN
 
 
 def test_the_logger_sample_imports_with_its_command_and_holds_the_truth(tmp_path):
-    for name in os.listdir(SAMPLE):
-        shutil.copy(os.path.join(SAMPLE, name), tmp_path)
-    with open(tmp_path / "import-command.txt") as f:
-        args = shlex.split(f.read())[1:]
-    r = subprocess.run([os.path.abspath(GESMI) if os.sep in GESMI else GESMI, *args], cwd=tmp_path,
-                       capture_output=True, text=True)
+    r = run_import_command(tmp_path)
     assert r.returncode == 0, r.stderr
     assert "2 GGA fixes taken" in r.stdout and "t = 0 at 2026-05-14T08:00:00Z" in r.stdout
     # The grid is the rows with a DVL reading: count them independently in the log.
@@ -47,12 +59,7 @@ def test_results_and_exports_carry_the_logs_epoch(tmp_path):
 
     import h5py
 
-    for name in os.listdir(SAMPLE):
-        shutil.copy(os.path.join(SAMPLE, name), tmp_path)
-    with open(tmp_path / "import-command.txt") as f:
-        args = shlex.split(f.read())[1:]
-    gesmi_bin = os.path.abspath(GESMI) if os.sep in GESMI else GESMI
-    assert subprocess.run([gesmi_bin, *args], cwd=tmp_path, capture_output=True).returncode == 0
+    gesmi_bin = import_sample(tmp_path)
     # The first row of log.csv is 2026-05-14T08:00:00.000000Z: t = 0 at that second.
     r = subprocess.run([gesmi_bin, "solve", "mission.h5", "-o", "result.h5", "--geojson"], cwd=tmp_path,
                        capture_output=True, text=True)
@@ -78,12 +85,7 @@ def test_results_and_exports_carry_the_logs_epoch(tmp_path):
 def test_config_cannot_silently_miss_bounds_fixed_at_import(tmp_path):
     import h5py
 
-    for name in os.listdir(SAMPLE):
-        shutil.copy(os.path.join(SAMPLE, name), tmp_path)
-    with open(tmp_path / "import-command.txt") as f:
-        args = shlex.split(f.read())[1:]
-    gesmi_bin = os.path.abspath(GESMI) if os.sep in GESMI else GESMI
-    assert subprocess.run([gesmi_bin, *args], cwd=tmp_path, capture_output=True).returncode == 0
+    gesmi_bin = import_sample(tmp_path)
     # The sample's depth is read at 1 Hz: its bounds are per sample, made at import.
     (tmp_path / "deeper.yaml").write_text("depth_absolute: 3\n")
     r = subprocess.run([gesmi_bin, "solve", "mission.h5", "--config", "deeper.yaml", "-o", "r.h5"], cwd=tmp_path,
@@ -109,12 +111,7 @@ def test_config_cannot_silently_miss_bounds_fixed_at_import(tmp_path):
 
 
 def test_a_logger_export_refuses_per_sample_bounds_it_cannot_carry(tmp_path):
-    for name in os.listdir(SAMPLE):
-        shutil.copy(os.path.join(SAMPLE, name), tmp_path)
-    with open(tmp_path / "import-command.txt") as f:
-        args = shlex.split(f.read())[1:]
-    gesmi_bin = os.path.abspath(GESMI) if os.sep in GESMI else GESMI
-    assert subprocess.run([gesmi_bin, *args], cwd=tmp_path, capture_output=True).returncode == 0
+    gesmi_bin = import_sample(tmp_path)
     r = subprocess.run([gesmi_bin, "export", "mission.h5", "--format", "logger", "-o", "again"], cwd=tmp_path,
                        capture_output=True, text=True)
     assert r.returncode == 2 and "mission.h5: /nav/half_widths/depth" in r.stderr, r.stderr
@@ -122,12 +119,7 @@ def test_a_logger_export_refuses_per_sample_bounds_it_cannot_carry(tmp_path):
 
 
 def test_the_python_model_mapping_obeys_the_same_rules_as_config(tmp_path):
-    for name in os.listdir(SAMPLE):
-        shutil.copy(os.path.join(SAMPLE, name), tmp_path)
-    with open(tmp_path / "import-command.txt") as f:
-        args = shlex.split(f.read())[1:]
-    gesmi_bin = os.path.abspath(GESMI) if os.sep in GESMI else GESMI
-    assert subprocess.run([gesmi_bin, *args], cwd=tmp_path, capture_output=True).returncode == 0
+    gesmi_bin = import_sample(tmp_path)
     m = gesmi.read_mission(str(tmp_path / "mission.h5"))
     depth = m.model["depth_absolute"]
     try:
