@@ -8,10 +8,18 @@
 #include <numbers>
 
 #include "io/format_error.h"
+#include "io/imports/csv_number.h"
 #include "solver/interval/rounding.h"
+#include "solver/mission/frame_scale.h"
 #include "solver/mission/meridian_convergence.h"
 
 namespace gesmi::io {
+
+std::string fix_beyond_zone(double distance) {
+  return "the fix is " + format_number(std::round(distance)) + " m from the origin, beyond the " +
+         format_number(kLocalFrameZone / 1000.0) +
+         " km zone of the local frame: give an origin nearer the mission (--origin LAT,LON)";
+}
 
 LocalFrame::LocalFrame(const GeoOrigin& origin) : origin_(origin) {}
 
@@ -50,26 +58,19 @@ void set_geodetic_gps(Mission& m) {
   }
 }
 
-double frame_scale_margin(double reach, double depth) {
-  // The tangent plane shrinks a step at distance rho from the origin by at most
-  // 1 - cos(rho / M) <= rho^2 / (2 M^2), M = b^2 / a the smallest radius of curvature
-  // (measured against GeographicLib's geodesics in tests/io/geodesy_test.cpp); a
-  // robot at depth D sees the surface move faster by D / R <= D / M. 1 % covers the
-  // higher-order terms and the roundings.
-  const double a = GeographicLib::Constants::WGS84_a(), f = GeographicLib::Constants::WGS84_f();
-  const double smallest_radius = a * (1.0 - f) * (1.0 - f);
-  const double scale = reach * reach / (2.0 * smallest_radius * smallest_radius);
-  return 1.01 * (scale + std::max(depth, 0.0) / smallest_radius);
-}
-
 double deepest(const Mission& m) {
+  // The floor under the robot: its depth and altitude plus their bounds, and the
+  // mine's depth band.
   double deepest = 0.0, longest = 0.0;
   for (std::size_t k = 0; k < m.size(); ++k) {
-    deepest = std::max(deepest, m.depth[k] + (m.half_widths.depth.empty() ? depth_bound(m.model, m.depth[k]) : m.half_widths.depth[k]));
+    const double depth = m.depth[k] + (m.half_widths.depth.empty() ? depth_bound(m.model, m.depth[k]) : m.half_widths.depth[k]);
+    const double altitude = m.altitude[k] + (m.half_widths.altitude.empty() ? m.model.altitude : m.half_widths.altitude[k]);
+    deepest = std::max(deepest, depth + std::max(altitude, 0.0));
     if (k + 1 < m.size()) longest = std::max(longest, m.time[k + 1] - m.time[k]);
   }
-  // Between samples the robot can go deeper, at max_depth_rate, for half the longest step.
-  deepest += m.model.max_depth_rate * longest / 2.0;
+  // Between samples the floor under the robot can go deeper, at the depth's and the
+  // altitude's rates, for half the longest step.
+  deepest += (m.model.max_depth_rate + m.model.max_altitude_rate) * longest / 2.0 + m.model.mine_depth_band;
   return 1.000001 * deepest;  // the few roundings above
 }
 
@@ -86,9 +87,7 @@ void fill_local_gps(Mission& m, const std::string& source) {
     const NorthEast p = frame.to_local(m.gps_latitude[i], m.gps_longitude[i]);
     const double distance = std::hypot(p.north, p.east);
     if (distance > kLocalFrameZone)
-      throw FormatError(source + ": /gps/lonlat: row " + std::to_string(i) + ": fix is " +
-                        std::to_string(static_cast<long>(distance)) + " m from the origin, beyond the " +
-                        std::to_string(static_cast<long>(kLocalFrameZone)) + " m zone of the local frame");
+      throw FormatError(source + ": /gps/lonlat: row " + std::to_string(i) + ": " + fix_beyond_zone(distance));
     m.gps_north[i] = p.north;
     m.gps_east[i] = p.east;
     // A degree bound in metres: the radius of curvature never exceeds a / (1 - f)^2
@@ -105,11 +104,13 @@ void fill_local_gps(Mission& m, const std::string& source) {
     }
   }
   // The heading's margin holds anywhere in the frame's zone: the solver bounds it
-  // again, per sample, over the tube it solved (solver/network/heading_frame.h).
+  // again, per sample, over the tube it solved (solver/network/frame_margins.h).
   m.heading_frame_margin = meridian_convergence_within(m.origin.latitude, kLocalFrameZone);
-  // The frame's scale along a path anywhere in the zone, and the surface point's
-  // speed at the deepest the robot can be (docs/model.md, "The local frame's scale").
-  m.frame_scale_margin = frame_scale_margin(kLocalFrameZone, deepest(m));
+  // The frame's scale along a path anywhere in the zone (narrowed per sample by the
+  // solve like the heading's), and the surface point's speed at the deepest the
+  // sonar sees (docs/model.md, "The local frame's scale").
+  m.frame_scale_margin = frame_scale_within(kLocalFrameZone);
+  m.depth_scale_margin = depth_scale_within(deepest(m));
   // A fix's bounds are north and east half-widths along its own meridian and
   // parallel, which turn against the frame's axes by the convergence where the true
   // position lies (within the larger half-width of the fix): the frame box must hold

@@ -172,9 +172,7 @@ Mission mission_from_gesmi_txt(GesmiTextLog log, const std::string& name, const 
     const std::size_t k = static_cast<std::size_t>(
         std::lower_bound(m.time.begin(), m.time.end(), m.gps_time[i]) - m.time.begin());
     if (std::hypot(x[k], y[k]) > kLocalFrameZone)
-      fail_at(name, log.line[k], "x, y: the fix is " + format_number(std::round(std::hypot(x[k], y[k]))) +
-                                     " m from the origin, beyond the " + format_number(kLocalFrameZone) +
-                                     " m zone of the local frame");
+      fail_at(name, log.line[k], "x, y: " + fix_beyond_zone(std::hypot(x[k], y[k])));
   }
   return m;
 }

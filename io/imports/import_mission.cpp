@@ -154,9 +154,8 @@ Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs, std::
   for (std::size_t i = 0; i < gps.time.size(); ++i) {
     const NorthEast p = frame.to_local(gps.latitude[i], gps.longitude[i]);
     if (std::hypot(p.north, p.east) > kLocalFrameZone)
-      throw FormatError(inputs.gps + ":" + std::to_string(gps.line[i]) + ": longitude, latitude: the fix is " +
-                        format_number(std::round(std::hypot(p.north, p.east))) + " m from the origin, beyond the " +
-                        format_number(kLocalFrameZone) + " m zone of the local frame");
+      throw FormatError(inputs.gps + ":" + std::to_string(gps.line[i]) + ": longitude, latitude: " +
+                        fix_beyond_zone(std::hypot(p.north, p.east)));
   }
   m.gps_time = std::move(gps.time);
   m.gps_longitude = std::move(gps.longitude);

@@ -76,7 +76,7 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
 }
 
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
-                             const HeadingFrame& frame) {
+                             const FrameMargins& frame) {
   const SensorBoxes boxes(mission, model, frame);
   MissionNetwork net;
   net.time = mission.time;
@@ -93,16 +93,19 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
     d.at = TimeLocation::locate(mission.time, d.time, boxes);
     SonarPlane& plane = d.plane;
     plane.side = mission.mark_side[j] > 0 ? SonarSide::starboard : SonarSide::port;
+    double scale = boxes.frame_scale(d.at.k);
     if (d.at.on_grid) {
       plane.attitude = make_attitude(boxes.roll(d.at.k), boxes.pitch(d.at.k), boxes.heading(d.at.k));
       plane.altitude = boxes.altitude(d.at.k);
     } else {
       plane.attitude = boxes.attitude_between(d.at.k);
       plane.altitude = boxes.altitude_between(d.at.k);
+      scale = std::max(scale, boxes.frame_scale(d.at.k + 1));
     }
     plane.along_tolerance = model.along_track_tolerance;
     plane.depth_band = model.mine_depth_band;
     d.range = intersect(Interval::around(d.measured_range, model.mark_range), Interval::pos_reals());
+    plane.horizontal_slack = mul_up(scale, d.range.hi());
     net.detections.push_back(d);
   }
   std::stable_sort(net.detections.begin(), net.detections.end(),

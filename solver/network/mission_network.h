@@ -12,7 +12,7 @@
 
 #include "solver/mission/mission.h"
 #include "solver/network/detection.h"
-#include "solver/network/heading_frame.h"
+#include "solver/network/frame_margins.h"
 #include "solver/network/sensor_boxes.h"
 #include "solver/network/tube_domains.h"
 
@@ -44,14 +44,14 @@ struct MissionNetwork {
 
 /// Builds the sparse constraints. A mark with mine -1 is a disjunction over the
 /// mines (seed 001 VI-4); mine_count must exceed every mine number and be <= kMaxMines.
-/// The headings of the detections and between-sample offsets take the mission's
-/// zone-wide frame margin, or `frame`'s per-sample ones.
+/// The detections (heading, DVL boxes and horizontal slack) and the offsets between
+/// samples take the mission's zone-wide frame margins, or `frame`'s per-sample ones.
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes);
 /// The mines each of the first `rows` marks may belong to (bit i: mine i) in a network
 /// of those marks alone: the allowed sets build_network() gives their detections.
 std::vector<std::uint64_t> allowed_mines_of_marks(const Mission& mission, std::size_t rows);
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
-                             const HeadingFrame& frame);
+                             const FrameMargins& frame);
 
 /// The prior domains: increments from the sensors, depth from the barometer,
 /// fixes on sample times, unbounded elsewhere; mines unbounded; each detection's
@@ -59,7 +59,7 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
 TubeDomains initial_domains(const Mission& mission, const SensorModel& model, const MissionNetwork& network);
 
 /// The two halves of initial_domains: what the sensors give (increments and depth,
-/// under the mission's zone-wide frame margin; heading_frame.h builds them for
+/// under the mission's zone-wide frame margins; frame_margins.h builds them for
 /// per-sample margins), which does not depend on the fixes and marks, and the network's own priors
 /// (fixes on sample times, unbounded mines, candidate mines).
 TubeDomains sensor_domains(const Mission& mission, const SensorModel& model);

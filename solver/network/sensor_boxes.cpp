@@ -18,13 +18,13 @@ Interval SensorBoxes::heading(std::size_t k) const {
   // The gyrocompass measures from true north, which turns against the local frame
   // across the mission area (meridian convergence): widen by that angle.
   const Interval h = reading(m_.heading, m_.half_widths.heading, k, model_.heading);
-  const double margin = frame_.at(k);
+  const double margin = frame_.heading.at(k);
   return margin == 0.0 ? h : h.inflated(margin);
 }
 
 Vec3I SensorBoxes::velocity(std::size_t k) const {
   // v ± (a |v| + b) per component (or the sample's own half-width), rounded up, plus
-  // what the local tangent frame does to distances: Mission::frame_scale_margin times
+  // what the depth and the local tangent frame do to distances (frame_scale()) times
   // the box's largest |vx| + |vy| + |vz| on every component, since the frame's
   // distortion turns a velocity's error off its own axis (docs/model.md, "The local
   // frame's scale").
@@ -36,10 +36,12 @@ Vec3I SensorBoxes::velocity(std::size_t k) const {
     own[i] = widths[i]->empty() ? add_up(mul_up(model_.dvl_relative, v), model_.dvl_absolute) : (*widths[i])[k];
     largest = add_up(largest, add_up(v, own[i]));
   }
-  const double frame = mul_up(m_.frame_scale_margin, largest);
+  const double frame = mul_up(frame_scale(k), largest);
   return Vec3I(Interval::around(m_.vx[k], add_up(own[0], frame)), Interval::around(m_.vy[k], add_up(own[1], frame)),
                Interval::around(m_.vz[k], add_up(own[2], frame)));
 }
+
+double SensorBoxes::frame_scale(std::size_t k) const { return add_up(m_.depth_scale_margin, frame_.scale.at(k)); }
 
 Interval SensorBoxes::depth(std::size_t k) const {
   const double bound = depth_bound(model_, m_.depth[k]);
@@ -138,7 +140,7 @@ Vec3I SensorBoxes::step_increment(const SampleBoxes& a, const SampleBoxes& b, st
     turn->north = std::max(turn->north, hull_turn.north);
     turn->east = std::max(turn->east, hull_turn.east);
     // Boxes that do not meet say the data break the model, unless that turn mends
-    // it (heading_frame.h): then the caller gets both.
+    // it (frame_margins.h): then the caller gets both.
     if (meet) return both;
     turn->apart_hull = hull;
   }

@@ -12,7 +12,7 @@
 #include "solver/interval/box.h"
 #include "solver/mission/mission.h"
 #include "solver/model/euler.h"
-#include "solver/network/heading_frame.h"
+#include "solver/network/frame_margins.h"
 
 namespace gesmi {
 
@@ -25,10 +25,10 @@ inline bool trapezoid_takes_rate_hull(const SensorModel& model, double dt_hi) {
 class SensorBoxes {
  public:
   /// The mission must outlive this object (it reads the mission's arrays), and so must
-  /// the frame's per-sample margins. The heading boxes grow by the frame's margin
-  /// (the mission's zone-wide one by default).
+  /// the frame's per-sample margins. The heading boxes grow by the frame's heading
+  /// margin and the DVL boxes by its scale (the mission's zone-wide ones by default).
   SensorBoxes(const Mission& mission, const SensorModel& model) : SensorBoxes(mission, model, zone_frame(mission)) {}
-  SensorBoxes(const Mission& mission, const SensorModel& model, const HeadingFrame& frame)
+  SensorBoxes(const Mission& mission, const SensorModel& model, const FrameMargins& frame)
       : m_(mission), model_(model), frame_(frame) {}
 
   Interval roll(std::size_t k) const;
@@ -36,6 +36,9 @@ class SensorBoxes {
   Interval heading(std::size_t k) const;
   Vec3I velocity(std::size_t k) const;  // DVL, body frame
   Interval depth(std::size_t k) const;
+  /// The relative scale error between the surface speed at sample k and the DVL's
+  /// (Mission::depth_scale_margin plus the frame's scale margin), rounded up.
+  double frame_scale(std::size_t k) const;
   Interval altitude(std::size_t k) const;
 
   /// Boxes valid over the whole step [t_k, t_k+1] (k + 1 < size).
@@ -67,7 +70,7 @@ class SensorBoxes {
   Vec3I step_velocity(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
   /// Upper bounds of the integrals of |w_north| and |w_east| over a step, as the step
   /// model sees w: what a further turn of the heading widens the increment by
-  /// (heading_frame.h).
+  /// (frame_margins.h).
   struct StepTurn {
     double north = 0.0, east = 0.0;
     /// Trapezoid steps that also take the rate hull: when the two boxes do not meet,
@@ -92,7 +95,7 @@ class SensorBoxes {
 
   const Mission& m_;
   SensorModel model_;
-  HeadingFrame frame_;
+  FrameMargins frame_;
 };
 
 }  // namespace gesmi

@@ -148,10 +148,10 @@ void read_block(const Mission& m, const SensorModel& model, std::size_t first, s
 }
 
 VelocityModel velocity_model(const Mission& m, const SensorModel& model) {
-  // v ± (a |v| + b) as SensorBoxes::velocity(), the frame scale margin included.
+  // v ± (a |v| + b) as SensorBoxes::velocity() without frame margins: the depth's alone.
   return {model.dvl_relative,
           model.dvl_absolute,
-          m.frame_scale_margin,
+          m.depth_scale_margin,
           {!m.half_widths.vx.empty(), !m.half_widths.vy.empty(), !m.half_widths.vz.empty()}};
 }
 

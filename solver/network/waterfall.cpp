@@ -82,9 +82,9 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
                             const WaterfallBefore* before, std::optional<double> max_speed,
                             const std::function<void(double)>& on_progress) {
   // The tube holds the truth, so the frame's margins over it hold too.
-  const std::vector<double> margins = max_speed ? heading_margins_over(mission, domains, *max_speed)
-                                                : heading_margins_over(mission, domains);
-  const SensorBoxes boxes(mission, model, HeadingFrame{mission.heading_frame_margin, margins});
+  const FrameMarginValues margins = max_speed ? frame_margins_over(mission, domains, *max_speed)
+                                              : frame_margins_over(mission, domains);
+  const SensorBoxes boxes(mission, model, margins.view(mission));
   const std::size_t steps = domains.size(), mines = domains.mines.size();
   const Interval swath(0.0, model.sonar_max_range);
   // The mines whose box has not changed since `before`, if any.
@@ -127,6 +127,7 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
         plane.altitude = boxes.altitude(k);
         plane.along_tolerance = model.along_track_tolerance;
         plane.depth_band = model.mine_depth_band;
+        plane.horizontal_slack = mul_up(boxes.frame_scale(k), model.sonar_max_range);
         for (const std::size_t i : near) row[i] = feasible_ranges(plane, p, domains.mines[i], model.sonar_side, swath);
       }
       for (std::size_t i = 0; i < mines; ++i)

@@ -53,7 +53,7 @@ struct WaterfallBefore {
   const Waterfall& waterfall;
 };
 
-/// `max_speed`: speed_bound(mission) (heading_frame.h) when the caller has it.
+/// `max_speed`: speed_bound(mission) (frame_margins.h) when the caller has it.
 /// `on_progress` receives the fraction done, from the calling thread.
 Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains,
                             const WaterfallBefore* before = nullptr, std::optional<double> max_speed = std::nullopt,

@@ -2,7 +2,7 @@
 
 #include <chrono>
 
-#include "solver/network/heading_frame.h"
+#include "solver/network/frame_margins.h"
 #include "solver/network/inconsistency_text.h"
 #include "solver/solve/warm_start.h"
 
@@ -44,7 +44,7 @@ std::vector<ConstraintRef> diagnose(const MissionNetwork& net, const TubeDomains
 }
 
 // What every mode reads besides the mission: its GPS fixes, and the speed bound the
-// heading frame's margins take (heading_frame.h; computed once per solve).
+// frame's margins take (frame_margins.h; computed once per solve).
 struct SolveInputs {
   std::vector<PositionFix> fixes;
   double max_speed = 0.0;
@@ -56,7 +56,7 @@ struct Pass {
   TubeDomains sensor;
 };
 
-Pass build_pass(const Mission& mission, const SolveInputs& in, const SensorPriors& priors, const HeadingFrame& frame,
+Pass build_pass(const Mission& mission, const SolveInputs& in, const SensorPriors& priors, const FrameMargins& frame,
                 MissionSolution& s) {
   const auto start = Clock::now();
   Pass pass{build_network(mission, mission.model, in.fixes, frame), sensor_domains_in(priors, frame)};
@@ -71,14 +71,22 @@ SensorPriors build_priors(const Mission& mission, MissionSolution& s) {
   return priors;
 }
 
-// The per-sample margins over a first pass's tube (heading_frame.h), or none when the
-// mission has no frame margin or that pass found no solution.
+// The first pass's margins: at the farthest the fixes let the robot be when they are
+// true (frame_margins.h), else anywhere in the frame's zone.
+FrameMargins first_frame(const Mission& mission, const SolveInputs& in, bool fixes_true, FrameMarginValues& margins) {
+  if (!fixes_true || !has_frame_margins(mission)) return zone_frame(mission);
+  margins = frame_margins_from_fixes(mission, in.max_speed);
+  return margins.view(mission);
+}
+
+// The per-sample margins over a first pass's tube (frame_margins.h), or none when the
+// mission has no frame margins or that pass found no solution.
 bool narrow_frame(const Mission& mission, const SolveInputs& in, const TubeDomains& tube, bool consistent,
-                  std::vector<double>& margins, HeadingFrame& frame, MissionSolution& s) {
-  if (!consistent || frame.uniform == 0.0) return false;
+                  FrameMarginValues& margins, FrameMargins& frame, MissionSolution& s) {
+  if (!consistent || !has_frame_margins(mission)) return false;
   const auto start = Clock::now();
-  margins = heading_margins_over(mission, tube, in.max_speed);
-  frame.per_sample = margins;
+  margins = frame_margins_over(mission, tube, in.max_speed);
+  frame = margins.view(mission);
   s.timings_ms["build"] += elapsed_ms(start);
   return true;
 }
@@ -86,8 +94,8 @@ bool narrow_frame(const Mission& mission, const SolveInputs& in, const TubeDomai
 void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOptions& options, MissionSolution& s,
                 MissionNetwork& net) {
   SensorPriors priors = build_priors(mission, s);
-  HeadingFrame frame = zone_frame(mission);
-  std::vector<double> margins;
+  FrameMarginValues first_margins, margins;
+  FrameMargins frame = first_frame(mission, in, true, first_margins);
   auto start = Clock::now();
   // The depth boxes and vertical increments move from the priors into the domains.
   net = build_network(mission, mission.model, in.fixes, frame);
@@ -126,8 +134,8 @@ void solve_outliers(const Mission& mission, const SolveInputs& in, const SolveOp
   o.trust_fixes = options.trust_gps;
   o.solver = options.propagation;
   const SensorPriors priors = build_priors(mission, s);
-  HeadingFrame frame = zone_frame(mission);
-  std::vector<double> margins;
+  FrameMarginValues first_margins, margins;
+  FrameMargins frame = first_frame(mission, in, options.trust_gps, first_margins);
   Pass pass = build_pass(mission, in, priors, frame, s);
   auto start = Clock::now();
   OutlierReport r = solve_with_outliers(pass.net, pass.sensor, s.domains, o);
@@ -167,8 +175,8 @@ void solve_warm(const Mission& mission, const SolveInputs& in, const SolveOption
   if (why.empty()) {
     // The previous tube holds the truth: the added marks take the margins over it.
     const auto start = Clock::now();
-    const std::vector<double> margins = heading_margins_over(mission, previous.domains, in.max_speed);
-    net = build_network(mission, mission.model, in.fixes, HeadingFrame{mission.heading_frame_margin, margins});
+    const FrameMarginValues margins = frame_margins_over(mission, previous.domains, in.max_speed);
+    net = build_network(mission, mission.model, in.fixes, margins.view(mission));
     s.timings_ms["build"] += elapsed_ms(start);
     warm = detail::warm_domains(mission, net, previous, why);
   }
@@ -233,7 +241,7 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
   };
   stage("sensor enclosures", -1.0);
   auto start = Clock::now();
-  SolveInputs in{gps_fixes(mission), mission.heading_frame_margin > 0.0 ? speed_bound(mission) : 0.0};
+  SolveInputs in{gps_fixes(mission), has_frame_margins(mission) ? speed_bound(mission) : 0.0};
   MissionNetwork net;
   s.timings_ms["build"] = elapsed_ms(start);
   if (options.warm_from)

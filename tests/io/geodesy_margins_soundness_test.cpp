@@ -3,7 +3,7 @@
 // coordinates -> the origin's east/north/up axes, written out in long double here
 // (no GeographicLib), at adversarial places: origins from the equator to 89°
 // (the largest latitude a mission file accepts), on the antimeridian, and fixes
-// at the edge of the 10 km zone in every direction.
+// at the edge of the 100 km zone in every direction.
 //  - to_local is the orthographic projection of the sea-surface point on the
 //    origin's tangent plane, and to_geodetic inverts it;
 //  - heading_frame_margin bounds the angle between a true azimuth at any point
@@ -89,7 +89,7 @@ TEST(GeodesyMarginsSoundness, TheFrameIsTheOrthographicProjectionOfTheSurfacePoi
     const LocalFrame frame(origin);
     const IndependentFrame oracle(origin);
     for (double azimuth = 0.0; azimuth < 360.0; azimuth += 15.0)
-      for (const double distance : {0.0, 1.0, 2500.0, 9999.0}) {
+      for (const double distance : {0.0, 1.0, 2500.0, 9999.0, 99999.0}) {
         const GeoOrigin p = destination(origin, azimuth, distance);
         const NorthEast got = frame.to_local(p.latitude, p.longitude);
         long double n, e;
@@ -132,11 +132,11 @@ TEST(GeodesyMarginsSoundness, HeadingMarginHoldsEveryAzimuthOverTheMissionArea) 
   double tightest = 0.0;  // largest ratio of a turn to the margin
   for (const GeoOrigin& origin : kOrigins) {
     const IndependentFrame oracle(origin);
-    for (const double fix_distance : {0.0, 1000.0, 5000.0, 8000.0, 9999.0}) {
+    for (const double fix_distance : {0.0, 10000.0, 50000.0, 80000.0, 99999.0}) {
       Mission m = mission_with_fix(origin, 45.0, fix_distance);
       fill_local_gps(m, "test");
       // The area the margin claims: within the farthest fix's distance + 2 km
-      // (at most the 10 km zone) of the origin.
+      // (at most the 100 km zone) of the origin.
       const double extent = std::min(fix_distance + 2000.0, kLocalFrameZone);
       for (double bearing = 0.0; bearing < 360.0; bearing += 10.0)
         for (const double fraction : {0.5, 1.0}) {
@@ -178,7 +178,7 @@ void check_fix_boxes(SensorModel model, bool given_bounds, BoxCheck& c) {
   for (const GeoOrigin& origin : kOrigins) {
     const IndependentFrame oracle(origin);
     for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) {
-      Mission m = mission_with_fix(origin, azimuth, 9999.0);
+      Mission m = mission_with_fix(origin, azimuth, 99999.0);
       m.model = model;
       if (given_bounds) {
         m.gps_given_north_halfwidth = {0.5, 0.5};
@@ -197,11 +197,11 @@ void check_fix_boxes(SensorModel model, bool given_bounds, BoxCheck& c) {
             // tangent plane at the fix: a 2.5 m offset is 0.5 um off the surface).
             const long double hn = given_bounds ? 0.5L : model.gps_metres, he = given_bounds ? 2.5L : model.gps_metres;
             oracle.project(centre + (a * hn) * north + (b * he) * east, n, e);
-            c.check(m, i, n, e, where(origin, azimuth, 9999.0) + " metric corner");
+            c.check(m, i, n, e, where(origin, azimuth, 99999.0) + " metric corner");
           }
           if (!given_bounds) {  // the degree box
             oracle.project(surface_point(fix.latitude + a * model.gps_lat_deg, fix.longitude + b * model.gps_lon_deg), n, e);
-            c.check(m, i, n, e, where(origin, azimuth, 9999.0) + " degree corner");
+            c.check(m, i, n, e, where(origin, azimuth, 99999.0) + " degree corner");
           }
         }
     }

@@ -1,7 +1,8 @@
-// The heading frame's margins against the meridian convergence GeographicLib measures
-// (solver/network/heading_frame.h, io/geodesy.h): per-sample margins over a tube
-// hold the convergence at every point the robot can reach from its boxes, and a
-// mission whose gyrocompass reads from true north keeps its truth inside the tube.
+// The frame's margins against the meridian convergence and the scale GeographicLib
+// measures (solver/network/frame_margins.h, io/geodesy.h): per-sample margins over a
+// tube hold the convergence and the scale at every point the robot can reach from its
+// boxes, and a mission whose gyrocompass reads from true north keeps its truth inside
+// the tube.
 
 #include <gtest/gtest.h>
 
@@ -13,8 +14,9 @@
 #include <random>
 
 #include "io/geodesy.h"
+#include "solver/mission/frame_scale.h"
 #include "solver/mission/meridian_convergence.h"
-#include "solver/network/heading_frame.h"
+#include "solver/network/frame_margins.h"
 #include "solver/sim/simulator.h"
 #include "solver/solve/solve_mission.h"
 #include "tests/support/truth_checks.h"
@@ -34,6 +36,17 @@ double convergence_at(const LocalFrame& frame, double north, double east) {
   return std::atan2(b.east - a.east, b.north - a.north);
 }
 
+// The frame's scale error at the frame point (north, east): 1 - the frame length of a
+// 10 m geodesic step away from the origin (the radial direction, which shrinks most).
+double scale_error_at(const LocalFrame& frame, double north, double east) {
+  const GeoOrigin p = frame.to_geodetic(north, east);
+  const double azimuth = std::atan2(east, north) * 180.0 / std::numbers::pi;
+  GeoOrigin q{};
+  GeographicLib::Geodesic::WGS84().Direct(p.latitude, p.longitude, azimuth, 10.0, q.latitude, q.longitude);
+  const NorthEast a = frame.to_local(p.latitude, p.longitude), b = frame.to_local(q.latitude, q.longitude);
+  return 1.0 - std::hypot(b.east - a.east, b.north - a.north) / 10.0;
+}
+
 TEST(HeadingFrameGeodesy, TheSolverUsesWgs84sSemiMajorAxis) {
   EXPECT_EQ(kWgs84SemiMajorAxis, GeographicLib::Constants::WGS84_a());
 }
@@ -45,6 +58,7 @@ TEST(HeadingFrameGeodesy, MarginsOverATubeHoldTheConvergenceWhereverTheRobotCanB
     Mission m;
     m.origin = origin;
     m.heading_frame_margin = meridian_convergence_within(origin.latitude, kLocalFrameZone);
+    m.frame_scale_margin = frame_scale_within(kLocalFrameZone);
     TubeDomains tube;
     const std::size_t n = 300;
     double t = 0.0;
@@ -53,18 +67,22 @@ TEST(HeadingFrameGeodesy, MarginsOverATubeHoldTheConvergenceWhereverTheRobotCanB
       t += 0.1 + 3.0 * unit(random);
       for (auto* v : {&m.roll, &m.pitch, &m.heading, &m.vy, &m.vz, &m.altitude, &m.depth}) v->push_back(0.0);
       m.vx.push_back(2.5);
-      const double azimuth = 2 * std::numbers::pi * unit(random), distance = 9000.0 * unit(random);
+      const double azimuth = 2 * std::numbers::pi * unit(random), distance = 90000.0 * unit(random);
       const double half = k % 50 == 7 ? INFINITY : 0.5 + 300.0 * unit(random) * unit(random);
       tube.px.push_back(Interval::around(distance * std::cos(azimuth), half));
       tube.py.push_back(Interval::around(distance * std::sin(azimuth), half));
     }
-    const std::vector<double> margins = heading_margins_over(m, tube);
+    const FrameMarginValues values = frame_margins_over(m, tube);
+    const std::vector<double>& margins = values.heading;
     ASSERT_EQ(margins.size(), n);
+    ASSERT_EQ(values.scale.size(), n);
     const LocalFrame frame(origin);
     for (std::size_t k = 0; k < n; ++k) {
       ASSERT_LE(margins[k], m.heading_frame_margin);
+      ASSERT_LE(values.scale[k], m.frame_scale_margin);
       if (!tube.px[k].is_bounded()) {
         EXPECT_EQ(margins[k], m.heading_frame_margin);
+        EXPECT_EQ(values.scale[k], m.frame_scale_margin);
         continue;
       }
       // The corners of the sample's box and of its neighbours', pushed away from the
@@ -80,6 +98,8 @@ TEST(HeadingFrameGeodesy, MarginsOverATubeHoldTheConvergenceWhereverTheRobotCanB
             if (r + travel > kLocalFrameZone) continue;
             const double turn = std::fabs(convergence_at(frame, north * stretch, east * stretch));
             EXPECT_LE(turn, margins[k]) << origin.latitude << " sample " << k;
+            EXPECT_LE(scale_error_at(frame, north * stretch, east * stretch), values.scale[k])
+                << origin.latitude << " sample " << k;
           }
       }
       // No looser than the convergence due east at the farthest corner's distance, the
@@ -88,7 +108,12 @@ TEST(HeadingFrameGeodesy, MarginsOverATubeHoldTheConvergenceWhereverTheRobotCanB
       for (std::size_t j = k == 0 ? 0 : k - 1; j <= std::min(k + 1, n - 1); ++j)
         r = std::max(r, std::hypot(tube.px[j].mag(), tube.py[j].mag()));
       if (origin.latitude != 0.0 && std::isfinite(r)) {
-        EXPECT_LE(margins[k], 1.05 * std::fabs(convergence_at(frame, 0.0, std::min(r + 10.0, kLocalFrameZone))) + 1e-9)
+        EXPECT_LE(margins[k], 1.08 * std::fabs(convergence_at(frame, 0.0, std::min(r + 10.0, kLocalFrameZone))) + 1e-9)
+            << origin.latitude << " sample " << k;
+      }
+      // And the scale no looser than the one measured radially there.
+      if (std::isfinite(r)) {
+        EXPECT_LE(values.scale[k], 1.05 * scale_error_at(frame, std::min(r + 10.0, kLocalFrameZone), 0.0) + 1e-12)
             << origin.latitude << " sample " << k;
       }
     }

@@ -107,7 +107,7 @@ TEST(OperatorLoop, WarmRerunAfterAddingMissedMarksEqualsAColdSolve) {
     EXPECT_NE(warm.out.find("\"mode\": \"warm\""), std::string::npos) << warm.out;
     expect_ok(run_gesmi({"solve", current, "-o", dir + "/cold.h5"}));
     // Both are fixpoints of the same network but for the heading frame's margins, which
-    // each takes over its own earlier tube (heading_frame.h): a few mm apart.
+    // each takes over its own earlier tube (frame_margins.h): a few mm apart.
     EXPECT_LT(largest_difference(io::read_result(dir + "/warm.h5").solution, io::read_result(dir + "/cold.h5").solution), 5e-3);
   }
 }

@@ -10,7 +10,7 @@
 #include <map>
 
 #include "solver/mission/meridian_convergence.h"
-#include "solver/network/heading_frame.h"
+#include "solver/network/frame_margins.h"
 #include "solver/network/incremental_solver.h"
 #include "solver/network/outlier_solver.h"
 #include "solver/network/waterfall.h"

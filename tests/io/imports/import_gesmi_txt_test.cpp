@@ -114,7 +114,7 @@ TEST(GesmiTxt, RowsWithXYHalfWidthsBecomeFixesNorthEastAboutTheOrigin) {
 
 TEST(GesmiTxt, RowsWhoseXYBoundIsUnknownAreNotFixes) {
   // Logs write "unknown" as a huge bound (1e9): such a row says nothing about x, y.
-  Mission m = mission_from_gesmi_txt(read(row(0.0, "100 3 -50 4") + row(0.1, "0 1e9 0 1e9") + row(0.2, "0 20000 0 3") +
+  Mission m = mission_from_gesmi_txt(read(row(0.0, "100 3 -50 4") + row(0.1, "0 1e9 0 1e9") + row(0.2, "0 200000 0 3") +
                                           row(0.3, "120 1 -40 2")),
                                      "log.txt", GeoOrigin{48.2, -4.4}, SensorModel{}, GesmiXy::fixes);
   EXPECT_EQ(m.gps_time, (std::vector<double>{0.0, 0.3}));
@@ -138,11 +138,11 @@ TEST(GesmiTxt, TruthReadingTakesXYAndDepthAsTheTrajectoryLikeCodac) {
 
 TEST(GesmiTxt, RefusesFixesBeyondTheLocalFrameZone) {
   try {
-    mission_from_gesmi_txt(read(row(0.0, "0 1 0 1") + row(0.1, "12000 1 0 1")), "log.txt", kRedermorStartFix,
+    mission_from_gesmi_txt(read(row(0.0, "0 1 0 1") + row(0.1, "120000 1 0 1")), "log.txt", kRedermorStartFix,
                            SensorModel{}, GesmiXy::fixes);
     ADD_FAILURE() << "accepted";
   } catch (const FormatError& e) {
-    EXPECT_NE(std::string(e.what()).find("log.txt:2: x, y: the fix is 12000 m from the origin"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("log.txt:2: x, y: the fix is 120000 m from the origin"), std::string::npos)
         << e.what();
   }
 }

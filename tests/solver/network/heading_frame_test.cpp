@@ -1,15 +1,16 @@
-// The heading frame's margin applied after the build (heading_frame.h): the sensor
-// domains of a frameless build, widened for a turn of at most m, hold the exact
-// displacement of a truth whose gyrocompass reads from a north turned by any angle
-// within m, for every step model. The oracle is the truth's closed-form integral in
-// long double (tests/support/smooth_truth.h), independent of the rotations in
-// solver/model.
+// The frame's margins applied after the build (frame_margins.h): the sensor domains
+// of a frameless build, widened for a turn of at most m and a scale error of at most
+// s, hold the exact displacement of a truth whose gyrocompass reads from a north
+// turned by any angle within m and whose DVL reads speeds up to a factor 1 / (1 - s)
+// of the frame's (or 1 - s: the depth's effect), for every step model. The oracle is
+// the truth's closed-form integral in long double (tests/support/smooth_truth.h),
+// independent of the rotations in solver/model.
 
 #include <gtest/gtest.h>
 
 #include <numbers>
 
-#include "solver/network/heading_frame.h"
+#include "solver/network/frame_margins.h"
 #include "solver/network/sensor_boxes.h"
 #include "tests/support/smooth_truth.h"
 
@@ -21,12 +22,17 @@ using test::SmoothTruth;
 bool holds(const Interval& x, long double value) { return x.lo() <= value && value <= x.hi(); }
 
 // Steps whose increment misses the truth's displacement, when the readings come from
-// a north turned by `turn` and the domains are widened for `margin`, per sample.
+// a north turned by `turn` and the DVL's horizontal speeds are `speed_factor` times the
+// frame's, and the domains are widened for `margins` (per sample).
 int misses(const SmoothTruth& truth, const SensorModel& model, double turn, double heading_error,
-           const std::vector<double>& margins, std::uint64_t seed) {
+           const FrameMargins& margins, std::size_t samples, std::uint64_t seed, double speed_factor = 1.0) {
   // The gyrocompass reads psi_true = psi_local - turn, plus its error.
-  const Mission m = test::mission_of(truth, model, margins.size(), seed, heading_error - turn);
-  const TubeDomains d = sensor_domains_in(frameless_sensor_priors(m, model), HeadingFrame{0.0, margins});
+  Mission m = test::mission_of(truth, model, samples, seed, heading_error - turn);
+  for (std::size_t k = 0; k < m.size(); ++k) {  // (roll and pitch are zero: vx, vy are horizontal)
+    m.vx[k] *= speed_factor;
+    m.vy[k] *= speed_factor;
+  }
+  const TubeDomains d = sensor_domains_in(frameless_sensor_priors(m, model), margins);
   int outside = 0;
   for (std::size_t k = 0; k + 1 < m.size(); ++k) {
     const auto exact = truth.displacement(m.time[k], m.time[k + 1]);
@@ -58,7 +64,7 @@ TEST(HeadingFrame, TurnedIncrementsHoldTheDisplacementForEveryStepModel) {
           for (const double error : {-0.99 * model.heading, 0.99 * model.heading}) {
             std::vector<double> margins(300, margin);
             for (std::size_t k = 0; k < margins.size(); k += 7) margins[k] = 1.5 * margin;  // per sample
-            EXPECT_EQ(misses(truth, model, turn, error, margins, seed++), 0)
+            EXPECT_EQ(misses(truth, model, turn, error, FrameMargins{{0.0, margins}, {}}, margins.size(), seed++), 0)
                 << static_cast<int>(step) << " heading " << static_cast<double>(truth.heading) << " margin " << margin
                 << " turn " << turn << " error " << error;
           }
@@ -75,8 +81,39 @@ TEST(HeadingFrame, TheTestCatchesAMarginSmallerThanTheTurn) {
     for (const SmoothTruth& truth : truths_for(StepModel::trapezoid))
       for (const double turn : {-0.02, 0.02})
         outside += misses(truth, model, turn, std::copysign(0.99 * model.heading, -turn),
-                          std::vector<double>(300, part * 0.02), seed++);
+                          FrameMargins{{part * 0.02, {}}, {}}, 300, seed++);
     EXPECT_GT(outside, 100) << "margin at " << part << " of the turn";
+  }
+}
+
+TEST(HeadingFrame, ScaledIncrementsHoldTheDisplacementForEveryStepModel) {
+  std::uint64_t seed = 61;
+  for (const StepModel step : {StepModel::trapezoid, StepModel::rate_hull, StepModel::sample}) {
+    const SensorModel model = test::model_with(step, 1.0);
+    for (const SmoothTruth& truth : truths_for(step))
+      for (const double scale : {1e-4, 1e-3, 0.01})
+        for (const double factor : {1.0 / (1.0 - scale), 1.0 - scale})
+          for (const double turn : {0.0, 0.01}) {
+            std::vector<double> margins(300, scale);
+            for (std::size_t k = 0; k < margins.size(); k += 7) margins[k] = 1.5 * scale;  // per sample
+            const FrameMargins frame{{0.01, {}}, {0.0, margins}};
+            EXPECT_EQ(misses(truth, model, turn, 0.99 * model.heading, frame, margins.size(), seed++, factor), 0)
+                << static_cast<int>(step) << " heading " << static_cast<double>(truth.heading) << " scale " << scale
+                << " factor " << factor << " turn " << turn;
+          }
+  }
+}
+
+TEST(HeadingFrame, TheTestCatchesAScaleMarginSmallerThanTheScale) {
+  // Negative control: speeds read 1 / (1 - s) too fast, the domains widened for half
+  // of s (or not at all).
+  const SensorModel model = test::model_with(StepModel::trapezoid, 1.0);
+  for (const double part : {0.0, 0.5}) {
+    int outside = 0;
+    std::uint64_t seed = 71;
+    for (const SmoothTruth& truth : truths_for(StepModel::trapezoid))
+      outside += misses(truth, model, 0.0, 0.0, FrameMargins{{}, {part * 0.01, {}}}, 300, seed++, 1.0 / (1.0 - 0.01));
+    EXPECT_GT(outside, 100) << "scale margin at " << part << " of the scale";
   }
 }
 
@@ -88,8 +125,8 @@ TEST(HeadingFrame, WidensAboutAsMuchAsTurningTheHeadingBoxItself) {
   for (const SmoothTruth& truth : test::truths()) {
     const Mission m = test::mission_of(truth, model, 200, 51);
     const double margin = 0.2 * model.heading;
-    const TubeDomains after = sensor_domains_in(frameless_sensor_priors(m, model), HeadingFrame{margin, {}});
-    const SensorBoxes direct(m, model, HeadingFrame{margin, {}});
+    const TubeDomains after = sensor_domains_in(frameless_sensor_priors(m, model), FrameMargins{{margin, {}}, {}});
+    const SensorBoxes direct(m, model, FrameMargins{{margin, {}}, {}});
     for (std::size_t k = 0; k + 1 < m.size(); ++k) {
       const Vec3I d = direct.step_increment(k);
       EXPECT_LE(after.dx[k].width(), 1.02 * d[0].width() + 1e-12) << k;
@@ -99,7 +136,7 @@ TEST(HeadingFrame, WidensAboutAsMuchAsTurningTheHeadingBoxItself) {
 }
 
 // speed_bound() against the farthest corner of every sample's DVL box (the model's bound
-// with the frame scale margin, or the per-sample half-widths), in long double, plus
+// with the depth's scale margin, or the per-sample half-widths), in long double, plus
 // 1.7321 max_acceleration dt / 2 for the longest step: never below, and within 1e-9.
 long double farthest_speed(const Mission& m) {
   long double largest = 0.0L, longest = 0.0L;
@@ -113,7 +150,7 @@ long double farthest_speed(const Mission& m) {
       own[i] = widths[i]->empty() ? static_cast<long double>(m.model.dvl_relative) * v + m.model.dvl_absolute : (*widths[i])[k];
       largest_l1 += v + own[i];
     }
-    const long double frame = static_cast<long double>(m.frame_scale_margin) * largest_l1;
+    const long double frame = static_cast<long double>(m.depth_scale_margin) * largest_l1;
     for (int i = 0; i < 3; ++i) {
       const long double v = std::fabs(static_cast<long double>((*readings[i])[k]));
       const long double bound = own[i] + frame;
@@ -129,7 +166,7 @@ TEST(HeadingFrame, SpeedBoundHoldsTheFarthestCornerOfEveryDvlBox) {
   const SensorModel model = test::model_with(StepModel::trapezoid, 1.0);
   for (const SmoothTruth& truth : test::truths()) {
     Mission m = test::mission_of(truth, model, 400, 7, 0.0);
-    m.frame_scale_margin = 3e-5;  // as io/ sets it for a 10 km zone and 150 m depth
+    m.depth_scale_margin = 3e-5;  // as io/ sets it for a floor 190 m deep
     for (const bool per_sample : {false, true}) {
       if (per_sample)
         for (auto* w : {&m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz}) w->assign(m.size(), 0.03);

@@ -16,7 +16,7 @@
 #include <cmath>
 #include <random>
 
-#include "solver/network/heading_frame.h"
+#include "solver/network/frame_margins.h"
 #include "solver/network/sensor_boxes.h"
 #include "solver/network/sensor_kernel.h"
 #include "solver/sim/simulator.h"
@@ -31,7 +31,7 @@ Mission simulated(std::uint64_t seed, StepModel step) {
   o.duration = 900.0;
   Mission m = simulate_mission(o);
   m.model.step_model = step;
-  m.frame_scale_margin = 1e-3;  // far above io/'s (4.4e-6 for 10 km and 20 m): its term shows
+  m.depth_scale_margin = 1e-3;  // far above io/'s (5e-6 for a floor 30 m deep): its term shows
   return m;
 }
 
@@ -68,7 +68,7 @@ struct Comparison {
 // The priors' increments against a scalar loop over SensorBoxes (no frame margin).
 Comparison compare_with_scalar(const Mission& m) {
   const SensorPriors priors = frameless_sensor_priors(m, m.model);
-  const SensorBoxes boxes(m, m.model, HeadingFrame{});
+  const SensorBoxes boxes(m, m.model, FrameMargins{});
   Comparison c;
   for (std::size_t k = 0; k + 1 < m.size(); ++k) {
     SensorBoxes::StepTurn turn;
@@ -137,7 +137,7 @@ TEST(SensorKernel, WorldVelocityBoxesHoldRotatedVelocitiesOfTheBoxes) {
     const long double angle_width[3] = {h.roll[k], h.pitch[k], h.heading[k]};
     const long double velocity[3] = {m.vx[k], m.vy[k], m.vz[k]};
     // The frame's scale: its margin times the box's largest |vx| + |vy| + |vz| on each axis.
-    const long double frame = m.frame_scale_margin * (std::fabs(velocity[0]) + h.vx[k] + std::fabs(velocity[1]) + h.vy[k] +
+    const long double frame = m.depth_scale_margin * (std::fabs(velocity[0]) + h.vx[k] + std::fabs(velocity[1]) + h.vy[k] +
                                                        std::fabs(velocity[2]) + h.vz[k]);
     const long double velocity_width[3] = {h.vx[k] + frame, h.vy[k] + frame, h.vz[k] + frame};
     // The 64 corners of the sample's box, then 32 random points inside it.

@@ -1,10 +1,11 @@
-#include "solver/network/heading_frame.h"
+#include "solver/network/frame_margins.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "solver/interval/rounding.h"
+#include "solver/mission/frame_scale.h"
 #include "solver/mission/meridian_convergence.h"
 #include "solver/network/sensor_boxes.h"
 #include "solver/network/sensor_kernel.h"
@@ -30,6 +31,13 @@ double turn_widening(double margin, double other, double own) {
   return (margin * other + 0.5 * margin * margin * own) * up + std::numeric_limits<double>::min();
 }
 
+// How far a scale error of at most `scale` moves either horizontal component of a
+// step's increment: scale times the integrals of |w_n| and |w_e|; three roundings.
+double scale_widening(double scale, double north, double east) {
+  constexpr double up = 1.0 + 4.0 * std::numeric_limits<double>::epsilon();
+  return scale * (north + east) * up + std::numeric_limits<double>::min();
+}
+
 }  // namespace
 
 double speed_bound(const Mission& m) {
@@ -47,7 +55,8 @@ double speed_bound(const Mission& m) {
       own[i] = widths[i]->empty() ? m.model.dvl_relative * speed + m.model.dvl_absolute : (*widths[i])[k];
       largest_l1 += speed + own[i];
     }
-    const double frame = m.frame_scale_margin * largest_l1;
+    // (the plane's scale only shrinks: the depth's margin alone adds speed)
+    const double frame = m.depth_scale_margin * largest_l1;
     double squared = 0.0;
     for (int i = 0; i < 3; ++i) {
       const double speed = std::fabs((*readings[i])[k]);
@@ -63,7 +72,7 @@ double speed_bound(const Mission& m) {
 }
 
 SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& model) {
-  const HeadingFrame none{};
+  const FrameMargins none{};
   const SensorBoxes boxes(mission, model, none);
   const std::size_t n = mission.size();
   SensorPriors priors;
@@ -109,17 +118,26 @@ namespace {
 
 // Calls use(k, dx, dy, dz) with each step's increments under `frame`.
 template <class Use>
-void framed_increments(const SensorPriors& priors, const HeadingFrame& frame, Use use) {
-  // A step turns by the larger margin of its two samples; its north and east
-  // increments then widen by these amounts.
+void framed_increments(const SensorPriors& priors, const FrameMargins& frame, Use use) {
+  // A step turns by the larger heading margin of its two samples and scales by the
+  // larger scale margin; its north and east increments then widen by these amounts.
   auto apart = priors.apart_hulls.begin();
   for (std::size_t k = 0; k < priors.dx.size(); ++k) {
-    const double m = std::max(frame.at(k), frame.at(k + 1));
+    const double m = std::max(frame.heading.at(k), frame.heading.at(k + 1));
+    const double s = std::max(frame.scale.at(k), frame.scale.at(k + 1));
     Interval dx = priors.dx[k], dy = priors.dy[k], dz = priors.dz.empty() ? Interval::entire() : priors.dz[k];
     double north = 0.0, east = 0.0;
     if (m != 0.0) {
       north = turn_widening(m, priors.turn_east[k], priors.turn_north[k]);
       east = turn_widening(m, priors.turn_north[k], priors.turn_east[k]);
+    }
+    if (s != 0.0) {
+      const double scale = scale_widening(s, priors.turn_north[k], priors.turn_east[k]);
+      north = add_up(north, scale);
+      east = add_up(east, scale);
+    }
+    const bool widened = m != 0.0 || s != 0.0;
+    if (widened) {
       dx = dx.inflated(north);
       dy = dy.inflated(east);
     }
@@ -127,8 +145,8 @@ void framed_increments(const SensorPriors& priors, const HeadingFrame& frame, Us
       // Both boxes widen alike (the trapezoid above); where they still do not meet, the
       // step is empty and the solver reports it.
       const Vec3I& hull = apart->second;
-      dx = intersect(dx, m != 0.0 ? hull[0].inflated(north) : hull[0]);
-      dy = intersect(dy, m != 0.0 ? hull[1].inflated(east) : hull[1]);
+      dx = intersect(dx, widened ? hull[0].inflated(north) : hull[0]);
+      dy = intersect(dy, widened ? hull[1].inflated(east) : hull[1]);
       dz = intersect(dz, hull[2]);
       ++apart;
     }
@@ -138,7 +156,7 @@ void framed_increments(const SensorPriors& priors, const HeadingFrame& frame, Us
 
 // The domains of the framed increments, with the given depth boxes and vertical
 // increments (those of the priors, copied or moved), intersected with the apart hulls'.
-TubeDomains framed_domains(const SensorPriors& priors, const HeadingFrame& frame, std::vector<Interval> depth,
+TubeDomains framed_domains(const SensorPriors& priors, const FrameMargins& frame, std::vector<Interval> depth,
                            std::vector<Interval> dz) {
   TubeDomains d;
   d.px.assign(depth.size(), Interval::entire());
@@ -157,18 +175,18 @@ TubeDomains framed_domains(const SensorPriors& priors, const HeadingFrame& frame
 
 }  // namespace
 
-TubeDomains sensor_domains_in(const SensorPriors& priors, const HeadingFrame& frame) {
+TubeDomains sensor_domains_in(const SensorPriors& priors, const FrameMargins& frame) {
   return framed_domains(priors, frame, priors.depth, priors.dz);
 }
 
-TubeDomains take_sensor_domains(SensorPriors& priors, const HeadingFrame& frame) {
+TubeDomains take_sensor_domains(SensorPriors& priors, const FrameMargins& frame) {
   std::vector<Interval> depth = std::move(priors.depth), dz = std::move(priors.dz);
   priors.depth = {};
   priors.dz = {};
   return framed_domains(priors, frame, std::move(depth), std::move(dz));
 }
 
-void narrow_to_frame(TubeDomains& d, const SensorPriors& priors, const HeadingFrame& frame) {
+void narrow_to_frame(TubeDomains& d, const SensorPriors& priors, const FrameMargins& frame) {
   framed_increments(priors, frame, [&](std::size_t k, const Interval& dx, const Interval& dy, const Interval& dz) {
     d.dx[k] = intersect(d.dx[k], dx);
     d.dy[k] = intersect(d.dy[k], dy);
@@ -176,36 +194,103 @@ void narrow_to_frame(TubeDomains& d, const SensorPriors& priors, const HeadingFr
   });
 }
 
-std::vector<double> heading_margins_over(const Mission& mission, const TubeDomains& tube) {
-  if (mission.heading_frame_margin == 0.0) return {};
-  return heading_margins_over(mission, tube, speed_bound(mission));
+namespace {
+
+// Plain doubles below: every term is non-negative, so the few roundings to nearest of
+// each distance (at most 7) are covered by a relative 8 units in the last place, and
+// squares that underflow by the smallest normal number under the root.
+constexpr double kUp = 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
+
+// The margins of each sample from `reach` (the farthest the robot can be from the
+// origin at each sample's time): over each step, within the farther of its ends plus
+// half the step's travel (the robot is never farther than that from one of them);
+// capped at the zone's margins.
+FrameMarginValues margins_within(const Mission& mission, const std::vector<double>& reach, double speed) {
+  const std::size_t n = reach.size();
+  const double zone_heading = mission.heading_frame_margin, zone_scale = mission.frame_scale_margin;
+  FrameMarginValues v;
+  v.heading.assign(n, 0.0);
+  v.scale.assign(n, 0.0);
+  const auto take = [&](std::size_t k, double farthest) {
+    double heading = meridian_convergence_within(mission.origin.latitude, farthest);
+    double scale = frame_scale_within(farthest);
+    if (!(heading <= zone_heading)) heading = zone_heading;  // also when unbounded there (inf, NaN)
+    if (!(scale <= zone_scale)) scale = zone_scale;
+    v.heading[k] = std::max(v.heading[k], heading);
+    v.scale[k] = std::max(v.scale[k], scale);
+  };
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    const double half_travel = speed * (0.5 * (mission.time[k + 1] - mission.time[k]));
+    const double farthest = (std::max(reach[k], reach[k + 1]) + half_travel) * kUp;
+    take(k, farthest);
+    take(k + 1, farthest);
+  }
+  if (n == 1) take(0, reach[0] * kUp);
+  return v;
 }
 
-std::vector<double> heading_margins_over(const Mission& mission, const TubeDomains& tube, double speed) {
-  const double zone = mission.heading_frame_margin;
+// The farthest distance from the origin the fixes allow at each sample (infinite
+// without fixes): min over fixes i of r_i + speed |t_k - t_i|, r_i the farthest point
+// of fix i's box. The best fix before a time stays the best as time goes on (all grow
+// at the same rate), so one pass each way finds it.
+std::vector<double> reach_from_fixes(const Mission& m, double speed) {
+  const std::size_t n = m.size(), g = m.gps_time.size();
+  std::vector<double> reach(n, std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> order(g);
+  for (std::size_t i = 0; i < g; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return m.gps_time[a] < m.gps_time[b]; });
+  std::vector<double> fix_reach(g);
+  for (std::size_t i = 0; i < g; ++i) {
+    const double north = std::fabs(m.gps_north[i]) + m.gps_north_halfwidth[i];
+    const double east = std::fabs(m.gps_east[i]) + m.gps_east_halfwidth[i];
+    fix_reach[i] = std::sqrt(north * north + east * east + std::numeric_limits<double>::min()) * kUp;
+  }
+  const auto from = [&](std::size_t i, double t) {
+    return (fix_reach[i] + speed * std::fabs(t - m.gps_time[i])) * kUp;
+  };
+  // Forward: the best fix at or before each sample (g: none yet).
+  std::size_t next = 0, best = g;
+  for (std::size_t k = 0; k < n; ++k) {
+    for (; next < g && m.gps_time[order[next]] <= m.time[k]; ++next) {
+      const std::size_t i = order[next];
+      if (best == g || from(i, m.gps_time[i]) < from(best, m.gps_time[i])) best = i;
+    }
+    if (best != g) reach[k] = from(best, m.time[k]);
+  }
+  // Backward: the best fix at or after each sample.
+  best = g;
+  for (std::size_t k = n, remaining = g; k-- > 0;) {
+    for (; remaining > 0 && m.gps_time[order[remaining - 1]] >= m.time[k]; --remaining) {
+      const std::size_t i = order[remaining - 1];
+      if (best == g || from(i, m.gps_time[i]) < from(best, m.gps_time[i])) best = i;
+    }
+    if (best != g) reach[k] = std::min(reach[k], from(best, m.time[k]));
+  }
+  return reach;
+}
+
+}  // namespace
+
+FrameMarginValues frame_margins_over(const Mission& mission, const TubeDomains& tube) {
+  if (!has_frame_margins(mission)) return {};
+  return frame_margins_over(mission, tube, speed_bound(mission));
+}
+
+FrameMarginValues frame_margins_over(const Mission& mission, const TubeDomains& tube, double speed) {
   const std::size_t n = tube.size();
-  if (zone == 0.0 || n == 0) return {};
-  // Plain doubles: every term is non-negative, so the few roundings to nearest of each
-  // distance (at most 7) are covered by a relative 8 units in the last place, and
-  // squares that underflow by the smallest normal number under the root.
-  constexpr double up = 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
-  std::vector<double> reach(n);  // farthest distance from the origin within sample k's box
+  if (!has_frame_margins(mission) || n == 0) return {};
+  // The farthest distance from the origin within sample k's box.
+  std::vector<double> reach(n);
   for (std::size_t k = 0; k < n; ++k) {
     const double north = tube.px[k].mag(), east = tube.py[k].mag();
-    reach[k] = std::sqrt(north * north + east * east + std::numeric_limits<double>::min());  // (squares that underflow)
+    reach[k] = std::sqrt(north * north + east * east + std::numeric_limits<double>::min()) * kUp;
   }
-  std::vector<double> margins(n, 0.0);
-  for (std::size_t k = 0; k + 1 < n; ++k) {
-    // Within a step the robot is at most half the step's travel from one of its ends.
-    const double half_travel = speed * (0.5 * (mission.time[k + 1] - mission.time[k]));
-    const double farthest = (std::max(reach[k], reach[k + 1]) + half_travel) * up;
-    double step = meridian_convergence_within(mission.origin.latitude, farthest);
-    if (!(step <= zone)) step = zone;  // also when the tube is unbounded there (inf, NaN)
-    margins[k] = std::max(margins[k], step);
-    margins[k + 1] = std::max(margins[k + 1], step);
-  }
-  if (n == 1) margins[0] = std::min(zone, meridian_convergence_within(mission.origin.latitude, reach[0] * up));
-  return margins;
+  return margins_within(mission, reach, speed);
+}
+
+FrameMarginValues frame_margins_from_fixes(const Mission& mission, double speed) {
+  if (!has_frame_margins(mission) || mission.size() == 0) return {};
+  return margins_within(mission, reach_from_fixes(mission, speed), speed);
 }
 
 }  // namespace gesmi
