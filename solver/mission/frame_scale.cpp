@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "solver/interval/rounding.h"
+
 namespace gesmi {
 
 double frame_scale_within(double distance) {
@@ -9,5 +11,10 @@ double frame_scale_within(double distance) {
 }
 
 double depth_scale_within(double depth) { return 1.01 * (std::max(depth, 0.0) / kWgs84SmallestRadius); }
+
+double sonar_frame_slack(double scale, double range) {
+  const double drop = mul_up(1.01, div_up(mul_up(range, range), 2.0 * kWgs84SmallestRadius));
+  return add_up(mul_up(scale, range), drop);
+}
 
 }  // namespace gesmi

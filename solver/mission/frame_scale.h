@@ -27,4 +27,11 @@ double frame_scale_within(double distance);
 /// depth / (M - depth) up to 60 km deep.
 double depth_scale_within(double depth);
 
+/// How far apart, on each axis, a sonar's offset e (robot minus mine, `range` metres
+/// long, in the local frame at the robot) and the frame's q - m (the tangent plane's
+/// north and east, depths along each point's own vertical) can be, for a relative
+/// scale error at most `scale` (frame and depth): scale times the range horizontally,
+/// plus the surface's drop over the range, 1.01 range² / (2 M), vertically. Rounded up.
+double sonar_frame_slack(double scale, double range);
+
 }  // namespace gesmi

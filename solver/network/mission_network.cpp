@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "solver/mission/frame_scale.h"
+
 namespace gesmi {
 
 namespace {
@@ -105,7 +107,7 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
     plane.along_tolerance = model.along_track_tolerance;
     plane.depth_band = model.mine_depth_band;
     d.range = intersect(Interval::around(d.measured_range, model.mark_range), Interval::pos_reals());
-    plane.horizontal_slack = mul_up(scale, d.range.hi());
+    plane.frame_slack = sonar_frame_slack(scale, d.range.hi());
     net.detections.push_back(d);
   }
   std::stable_sort(net.detections.begin(), net.detections.end(),

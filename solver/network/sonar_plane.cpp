@@ -27,8 +27,8 @@ Vec3I SonarPlane::body_prior(SonarSide on) const {
 }
 
 Vec3I SonarPlane::rough_body_offset(const Vec3I& q, const Vec3I& m) const {
-  const Interval ez = intersect(q[2] - m[2], vertical());
-  const Interval ex = (q[0] - m[0]).inflated(horizontal_slack), ey = (q[1] - m[1]).inflated(horizontal_slack);
+  const Interval ez = intersect((q[2] - m[2]).inflated(frame_slack), vertical());
+  const Interval ex = (q[0] - m[0]).inflated(frame_slack), ey = (q[1] - m[1]).inflated(frame_slack);
   // world_to_body (euler.h) term by term, the along-track component first: most mines in
   // reach are ahead or behind, out of the plane, and need no more.
   const Attitude<Interval>& a = attitude;
@@ -76,17 +76,15 @@ bool SonarPlane::contract(Vec3I& q, Vec3I& m, Interval& r) const {
   // learnt. Stop early when nothing moves by more than a micrometre.
   for (int round = 0; ok && round < 4; ++round) {
     const Vec3I q_before = q, m_before = m;
-    Vec3I e((q[0] - m[0]).inflated(horizontal_slack), (q[1] - m[1]).inflated(horizontal_slack), q[2] - m[2]);
+    Vec3I e((q[0] - m[0]).inflated(frame_slack), (q[1] - m[1]).inflated(frame_slack), (q[2] - m[2]).inflated(frame_slack));
     ok = e[2].intersect_with(vertical);
     ok = ok && contract_distance<3>(r, {&e[0], &e[1], &e[2]}, {&zero_x, &zero_y, &zero_z});
     Vec3I eb = world_to_body(attitude, e);
     ok = ok && narrow(eb, prior);
     ok = ok && contract_distance<3>(r, {&eb[0], &eb[1], &eb[2]}, {&zero_x, &zero_y, &zero_z});
     ok = ok && narrow(e, body_to_world(attitude, eb));
-    if (ok) {
-      e[0] = e[0].inflated(horizontal_slack);
-      e[1] = e[1].inflated(horizontal_slack);
-    }
+    if (ok)
+      for (int i = 0; i < 3; ++i) e[i] = e[i].inflated(frame_slack);
     for (int i = 0; ok && i < 3; ++i) ok = bwd_sub(e[i], q[i], m[i]);
     if (ok && largest_change(q_before, q) < 1e-6 && largest_change(m_before, m) < 1e-6) break;
   }

@@ -8,9 +8,10 @@
 //   ||e|| = r                           (the slant range)
 //   e.z = -(a + s), |s| <= band         (m_z = a + p_z + s, eq. 10)
 // contracted forward-backward in both frames (docs/model.md). The robot and the mine
-// are placed in the local frame's plane, whose horizontal offset differs from e's by
-// at most `horizontal_slack` on each axis (the frame's scale and the depth's times the
-// largest range, docs/model.md "The local frame's scale"). A mark (detection.h)
+// are placed in the local frame, where q - m differs from e by at most `frame_slack`
+// on each axis (sonar_frame_slack(): the frame's scale and the depth's times the
+// largest range, and the surface's drop over it; docs/model.md "The local frame's
+// scale"). A mark (detection.h)
 // is this plane plus a measured range and a mine; the waterfall (waterfall.h) asks
 // the plane alone at which ranges a mine can appear.
 
@@ -25,7 +26,7 @@ struct SonarPlane {
   Interval altitude;            // above the floor at that instant
   double along_tolerance = 0.0;
   double depth_band = 0.0;
-  double horizontal_slack = 0.0;  // m, on north and east between the plane's q - m and e
+  double frame_slack = 0.0;  // m, on each axis between the frame's q - m and e
   SonarSide side = SonarSide::starboard;  // port or starboard (not both)
 
   /// Contracts the robot's position q, the mine box m and the slant range r; false

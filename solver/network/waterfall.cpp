@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "solver/mission/frame_scale.h"
 #include "solver/network/sonar_plane.h"
 #include "solver/network/sensor_boxes.h"
 #include "solver/network/step_chunks.h"
@@ -127,7 +128,7 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
         plane.altitude = boxes.altitude(k);
         plane.along_tolerance = model.along_track_tolerance;
         plane.depth_band = model.mine_depth_band;
-        plane.horizontal_slack = mul_up(boxes.frame_scale(k), model.sonar_max_range);
+        plane.frame_slack = sonar_frame_slack(boxes.frame_scale(k), model.sonar_max_range);
         for (const std::size_t i : near) row[i] = feasible_ranges(plane, p, domains.mines[i], model.sonar_side, swath);
       }
       for (std::size_t i = 0; i < mines; ++i)
