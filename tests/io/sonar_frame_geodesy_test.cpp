@@ -93,7 +93,9 @@ TEST(SonarFrameGeodesy, TheSlackKeepsTheTruthAnywhereInTheZone) {
           const double slack = sonar_frame_slack(scale, s.range.hi());
           EXPECT_TRUE(keeps_truth(s, slack)) << origin.latitude << " " << distance << " m at " << azimuth << " beam +"
                                              << turn;
-          if (distance == 100.0) EXPECT_TRUE(keeps_truth(s, 0.0));  // near the origin the boxes hold it all
+          if (distance == 100.0) {
+            EXPECT_TRUE(keeps_truth(s, 0.0));  // near the origin the boxes hold it all
+          }
           if (distance == 90000.0 && (turn == 0.0 || turn == 180.0)) {
             ++radial;
             lost_without += !keeps_truth(s, 0.0);
