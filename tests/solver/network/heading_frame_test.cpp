@@ -10,6 +10,8 @@
 
 #include <numbers>
 
+#include "solver/mission/frame_scale.h"
+#include "solver/mission/meridian_convergence.h"
 #include "solver/network/frame_margins.h"
 #include "solver/network/sensor_boxes.h"
 #include "tests/support/smooth_truth.h"
@@ -175,6 +177,70 @@ TEST(HeadingFrame, SpeedBoundHoldsTheFarthestCornerOfEveryDvlBox) {
       EXPECT_GE(bound, exact);
       EXPECT_LE(bound, exact * (1.0L + 1e-9L));
     }
+  }
+}
+
+}  // namespace
+}  // namespace gesmi
+
+namespace gesmi {
+namespace {
+
+// frame_margins_from_fixes() against the farthest distance the fixes allow, found by
+// sampling each step densely in long double: at time t the robot is within
+// min over fixes i of (farthest point of fix i's box + speed |t - t_i|) of the origin.
+TEST(FrameMarginsFromFixes, HoldTheFarthestPointTheFixesAllowOnEveryStep) {
+  std::uint64_t state = 17;
+  const auto unit = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  const double speed = 2.7;
+  for (int trial = 0; trial < 20; ++trial) {
+    Mission m;
+    m.origin = {trial % 2 ? 70.0 : 48.2, 0.0};
+    m.heading_frame_margin = meridian_convergence_within(m.origin.latitude, 100000.0);
+    m.frame_scale_margin = frame_scale_within(100000.0);
+    double t = 0.0;
+    for (int k = 0; k < 200; ++k) {
+      m.time.push_back(t);
+      t += trial == 3 ? 400.0 * unit() : 0.1 + 30.0 * unit();  // (one mission with long steps)
+    }
+    for (int i = 0; i < trial % 5; ++i) {  // 0 to 4 fixes, anywhere in time, some before or after
+      m.gps_time.push_back(-100.0 + (t + 200.0) * unit());
+      m.gps_north.push_back(-90000.0 + 180000.0 * unit());
+      m.gps_east.push_back(-20000.0 + 40000.0 * unit());
+      m.gps_north_halfwidth.push_back(3.0 * unit());
+      m.gps_east_halfwidth.push_back(3.0 * unit());
+    }
+    const FrameMarginValues v = frame_margins_from_fixes(m, speed);
+    ASSERT_EQ(v.heading.size(), m.size());
+    std::vector<double> loosest(m.size(), 0.0);  // per sample: the bound a step's length farther out
+    for (std::size_t k = 0; k + 1 < m.size(); ++k) {
+      long double farthest = m.gps_time.empty() ? INFINITY : 0.0L;
+      for (int j = 0; j <= 40; ++j) {
+        const long double at = m.time[k] + (static_cast<long double>(m.time[k + 1]) - m.time[k]) * j / 40.0L;
+        long double nearest = INFINITY;
+        for (std::size_t i = 0; i < m.gps_time.size(); ++i) {
+          const long double north = std::fabs(static_cast<long double>(m.gps_north[i])) + m.gps_north_halfwidth[i];
+          const long double east = std::fabs(static_cast<long double>(m.gps_east[i])) + m.gps_east_halfwidth[i];
+          nearest = std::min(nearest, std::sqrt(north * north + east * east) + speed * std::fabs(at - m.gps_time[i]));
+        }
+        farthest = std::max(farthest, nearest);
+      }
+      const double d = static_cast<double>(farthest);
+      const double heading = std::min(m.heading_frame_margin, meridian_convergence_within(m.origin.latitude, d));
+      const double scale = std::min(m.frame_scale_margin, frame_scale_within(d));
+      for (const std::size_t s : {k, k + 1}) {
+        EXPECT_GE(v.heading[s], heading) << trial << " step " << k;
+        EXPECT_GE(v.scale[s], scale) << trial << " step " << k;
+      }
+      const double looser = d + speed * (m.time[k + 1] - m.time[k]);
+      for (const std::size_t s : {k, k + 1})
+        loosest[s] = std::max(loosest[s], std::min(m.heading_frame_margin, meridian_convergence_within(m.origin.latitude, looser)));
+    }
+    // Tightness: no more than the bound a step's travel farther out.
+    for (std::size_t k = 0; k < m.size(); ++k) EXPECT_LE(v.heading[k], loosest[k] * (1 + 1e-12)) << trial << " sample " << k;
   }
 }
 
