@@ -7,8 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <GeographicLib/Constants.hpp>
+#include <GeographicLib/Geocentric.hpp>
 #include <GeographicLib/Geodesic.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -142,6 +145,98 @@ TEST(HeadingFrameGeodesy, AMissionReadingFromTrueNorthKeepsItsTruth) {
     const MissionSolution s = solve_mission(m);
     ASSERT_TRUE(s.report.consistent) << s.report.message;
     EXPECT_TRUE(test::truth_inside(m, s.domains));
+  }
+}
+
+// Earth-centred coordinates of the frame point (north, east) at `depth` below the sea.
+std::array<double, 3> earth_centred(const LocalFrame& frame, double north, double east, double depth) {
+  const GeoOrigin g = frame.to_geodetic(north, east);
+  std::array<double, 3> x{};
+  GeographicLib::Geocentric::WGS84().Forward(g.latitude, g.longitude, -depth, x[0], x[1], x[2]);
+  return x;
+}
+
+double distance(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+// A simulated mission moved `north` and `east` metres away from its origin on WGS84:
+// its DVL reads the robot's own speed (the frame shrinks the surface's, the depth
+// slows the robot's against the surface point's), its gyrocompass reads from true
+// north, its mark ranges are the Earth-centred distances, its fixes are projections.
+Mission far_mission(std::uint64_t seed, const GeoOrigin& origin, double north, double east) {
+  SimulationOptions o;
+  o.seed = seed;
+  o.errors = SimulatedErrors::worst_case;
+  o.duration = 2000.0;
+  Mission m = simulate_mission(o);
+  m.origin = origin;
+  const LocalFrame frame(origin);
+  // The robot's position at time t, from the truth between samples (marks fall there).
+  const auto truth_at = [&](double t) {
+    const std::size_t k = std::min<std::size_t>(
+        static_cast<std::size_t>(std::upper_bound(m.time.begin(), m.time.end(), t) - m.time.begin()), m.size() - 1);
+    const std::size_t a = k == 0 ? 0 : k - 1;
+    const double w = k == a ? 0.0 : (t - m.time[a]) / (m.time[k] - m.time[a]);
+    return std::array<double, 3>{m.truth_x[a] + w * (m.truth_x[k] - m.truth_x[a]),
+                                 m.truth_y[a] + w * (m.truth_y[k] - m.truth_y[a]),
+                                 m.truth_z[a] + w * (m.truth_z[k] - m.truth_z[a])};
+  };
+  // Ranges: the flat world's error kept, the distance taken on the ellipsoid.
+  std::vector<double> flat(m.mark_count());
+  for (std::size_t j = 0; j < m.mark_count(); ++j) {
+    const std::array<double, 3> p = truth_at(m.mark_time[j]);
+    const double* mine = &m.truth_mines[3 * static_cast<std::size_t>(m.truth_marks_mine[j])];
+    flat[j] = std::hypot(p[0] - mine[0], p[1] - mine[1], p[2] - mine[2]);
+  }
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    m.truth_x[k] += north;
+    m.truth_y[k] += east;
+  }
+  for (std::size_t i = 0; i < m.truth_mines.size(); i += 3) {
+    m.truth_mines[i] += north;
+    m.truth_mines[i + 1] += east;
+  }
+  for (std::size_t i = 0; i < m.gps_north.size(); ++i) {
+    m.gps_north[i] += north;
+    m.gps_east[i] += east;
+  }
+  for (std::size_t j = 0; j < m.mark_count(); ++j) {
+    const std::array<double, 3> p = truth_at(m.mark_time[j]);
+    const double* mine = &m.truth_mines[3 * static_cast<std::size_t>(m.truth_marks_mine[j])];
+    m.mark_range[j] += distance(earth_centred(frame, p[0], p[1], p[2]), earth_centred(frame, mine[0], mine[1], mine[2])) -
+                       flat[j];
+  }
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    // The robot's horizontal speed against the frame's, over the step from k (to k
+    // from k - 1 at the end).
+    const std::size_t a = k + 1 < m.size() ? k : k - 1, b = a + 1;
+    const double plane = std::hypot(m.truth_x[b] - m.truth_x[a], m.truth_y[b] - m.truth_y[a]);
+    const double dz = m.truth_z[b] - m.truth_z[a];
+    const double full = distance(earth_centred(frame, m.truth_x[a], m.truth_y[a], m.truth_z[a]),
+                                 earth_centred(frame, m.truth_x[b], m.truth_y[b], m.truth_z[b]));
+    const double factor = plane > 1e-6 ? std::sqrt(std::max(full * full - dz * dz, 0.0)) / plane : 1.0;
+    m.vx[k] *= factor;
+    m.vy[k] *= factor;
+    m.heading[k] -= convergence_at(frame, m.truth_x[k], m.truth_y[k]);
+  }
+  set_geodetic_gps(m);
+  fill_local_gps(m, "simulated mission");
+  return m;
+}
+
+TEST(HeadingFrameGeodesy, AMissionFarFromTheOriginKeepsItsTruth) {
+  // 78 km and 94 km from the origin, at 48° and 70°.
+  const struct {
+    GeoOrigin origin;
+    double north, east;
+  } cases[] = {{{48.2, -4.4}, 60000.0, 50000.0}, {{70.0, 20.0}, -30000.0, 90000.0}};
+  std::uint64_t seed = 93;
+  for (const auto& c : cases) {
+    const Mission m = far_mission(seed++, c.origin, c.north, c.east);
+    const MissionSolution s = solve_mission(m);
+    ASSERT_TRUE(s.report.consistent) << s.report.message;
+    EXPECT_TRUE(test::truth_inside(m, s.domains)) << c.origin.latitude;
   }
 }
 
