@@ -9,7 +9,7 @@
 
 #include <map>
 
-#include "solver/mission/meridian_convergence.h"
+#include "io/geodesy.h"
 #include "solver/network/frame_margins.h"
 #include "solver/network/incremental_solver.h"
 #include "solver/network/outlier_solver.h"
@@ -77,13 +77,21 @@ void BM_SensorEnclosures(benchmark::State& state) {
 // Process CPU time: the build runs on every core (solver/network/step_chunks.h).
 BENCHMARK(BM_SensorEnclosures)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
+// The mission as a reader gives it: fixes in latitude/longitude and the local frame's
+// margins that io/ sets (docs/model.md, "The local frame's north" and "scale").
+Mission with_local_frame(Mission m) {
+  io::set_geodetic_gps(m);
+  io::fill_local_gps(m, "reference");
+  return m;
+}
+
 // The whole library solve (solve_mission: sensor enclosures, network, propagation; no
 // waterfall). Arg 0: the simulator's mission, whose headings are in the local frame (no
-// frame margin, one pass); arg 1: with the zone-wide margin io/ sets at the reference
-// origin, so that the solve runs its two passes (docs/model.md, "The local frame's north").
+// frame margin, one pass); arg 1: with the frame margins io/ sets, so that the solve runs
+// its two passes.
 void BM_SolveMission(benchmark::State& state) {
   Mission m = reference().mission;
-  if (state.range(0) == 1) m.heading_frame_margin = meridian_convergence_within(48.212920614, 10000.0);
+  if (state.range(0) == 1) m = with_local_frame(std::move(m));
   SolveOptions options;
   options.waterfall = false;
   options.diagnose = false;
@@ -93,10 +101,9 @@ void BM_SolveMission(benchmark::State& state) {
 BENCHMARK(BM_SolveMission)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
 // The reconstructed waterfall of a solved reference mission (6 mines, 60,000 steps): what
-// solve_mission adds after propagation, with the heading frame's margins over the tube.
+// solve_mission adds after propagation, with the frame's margins over the tube.
 void BM_Waterfall(benchmark::State& state) {
-  Mission m = reference().mission;
-  m.heading_frame_margin = meridian_convergence_within(48.212920614, 10000.0);
+  const Mission m = with_local_frame(reference().mission);
   SolveOptions options;
   options.waterfall = false;
   const MissionSolution solved = solve_mission(m, options);
