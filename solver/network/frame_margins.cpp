@@ -209,15 +209,15 @@ FrameMarginValues margins_within(const Mission& mission, const std::vector<doubl
   const std::size_t n = reach.size();
   const double zone_heading = mission.heading_frame_margin, zone_scale = mission.frame_scale_margin;
   FrameMarginValues v;
-  v.heading.assign(n, 0.0);
-  v.scale.assign(n, 0.0);
+  v.heading.assign(n, 0.0f);
+  v.scale.assign(n, 0.0f);
   const auto take = [&](std::size_t k, double farthest) {
     double heading = meridian_convergence_within(mission.origin.latitude, farthest);
     double scale = frame_scale_within(farthest);
     if (!(heading <= zone_heading)) heading = zone_heading;  // also when unbounded there (inf, NaN)
     if (!(scale <= zone_scale)) scale = zone_scale;
-    v.heading[k] = std::max(v.heading[k], heading);
-    v.scale[k] = std::max(v.scale[k], scale);
+    v.heading[k] = std::max(v.heading[k], float_up(heading));
+    v.scale[k] = std::max(v.scale[k], float_up(scale));
   };
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const double half_travel = speed * (0.5 * (mission.time[k + 1] - mission.time[k]));

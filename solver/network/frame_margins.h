@@ -28,11 +28,11 @@
 
 namespace gesmi {
 
-/// A margin at each sample: per_sample[k] when given (one per sample), the uniform
-/// margin otherwise.
+/// A margin at each sample: per_sample[k] when given (one per sample; floats rounded up,
+/// which keeps them bounds at half the memory), the uniform margin otherwise.
 struct SampleMargins {
   double uniform = 0.0;
-  std::span<const double> per_sample;
+  std::span<const float> per_sample;
   double at(std::size_t k) const { return per_sample.empty() ? uniform : per_sample[k]; }
 };
 
@@ -55,7 +55,7 @@ inline bool has_frame_margins(const Mission& mission) {
 
 /// Per-sample margins, owned; empty when the mission has no frame (no geodesy).
 struct FrameMarginValues {
-  std::vector<double> heading, scale;
+  std::vector<float> heading, scale;
   /// Margins that read these values (which must outlive them).
   FrameMargins view(const Mission& mission) const {
     return FrameMargins{{mission.heading_frame_margin, heading}, {mission.frame_scale_margin, scale}};

@@ -79,8 +79,8 @@ FrameMargins first_frame(const Mission& mission, const SolveInputs& in, bool fix
   return margins.view(mission);
 }
 
-// The per-sample margins over a first pass's tube (frame_margins.h), or none when the
-// mission has no frame margins or that pass found no solution.
+// The per-sample margins over a first pass's tube (frame_margins.h), replacing that
+// pass's, or none when the mission has no frame margins or that pass found no solution.
 bool narrow_frame(const Mission& mission, const SolveInputs& in, const TubeDomains& tube, bool consistent,
                   FrameMarginValues& margins, FrameMargins& frame, MissionSolution& s) {
   if (!consistent || !has_frame_margins(mission)) return false;
@@ -94,8 +94,8 @@ bool narrow_frame(const Mission& mission, const SolveInputs& in, const TubeDomai
 void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOptions& options, MissionSolution& s,
                 MissionNetwork& net) {
   SensorPriors priors = build_priors(mission, s);
-  FrameMarginValues first_margins, margins;
-  FrameMargins frame = first_frame(mission, in, true, first_margins);
+  FrameMarginValues margins;  // the first pass's, then the second's
+  FrameMargins frame = first_frame(mission, in, true, margins);
   auto start = Clock::now();
   // The depth boxes and vertical increments move from the priors into the domains.
   net = build_network(mission, mission.model, in.fixes, frame);
@@ -134,8 +134,8 @@ void solve_outliers(const Mission& mission, const SolveInputs& in, const SolveOp
   o.trust_fixes = options.trust_gps;
   o.solver = options.propagation;
   const SensorPriors priors = build_priors(mission, s);
-  FrameMarginValues first_margins, margins;
-  FrameMargins frame = first_frame(mission, in, options.trust_gps, first_margins);
+  FrameMarginValues margins;  // the first pass's, then the second's
+  FrameMargins frame = first_frame(mission, in, options.trust_gps, margins);
   Pass pass = build_pass(mission, in, priors, frame, s);
   auto start = Clock::now();
   OutlierReport r = solve_with_outliers(pass.net, pass.sensor, s.domains, o);
