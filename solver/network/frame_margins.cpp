@@ -1,6 +1,8 @@
 #include "solver/network/frame_margins.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 
@@ -22,20 +24,24 @@ float float_up(double x) {
   return f;
 }
 
-// How far a turn by at most `margin` moves one component of a step's increment:
-// margin times the other component's integral, plus margin²/2 times its own. All
-// terms are non-negative, so the four roundings to nearest are covered by a relative
-// 8 units in the last place, and underflow by the smallest normal number.
-double turn_widening(double margin, double other, double own) {
+// How far a turn by at most `turn` and a scale error by at most `scale` move one
+// horizontal component of a step's increment: turn times the other component's
+// integral, plus turn²/2 times its own, plus scale times both. All terms are
+// non-negative, so the seven roundings to nearest are covered by a relative 8 units in
+// the last place, and underflow by the smallest normal number.
+double frame_widening(double turn, double scale, double other, double own) {
   constexpr double up = 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
-  return (margin * other + 0.5 * margin * margin * own) * up + std::numeric_limits<double>::min();
+  return (turn * other + 0.5 * turn * turn * own + scale * (other + own)) * up + std::numeric_limits<double>::min();
 }
 
-// How far a scale error of at most `scale` moves either horizontal component of a
-// step's increment: scale times the integrals of |w_n| and |w_e|; three roundings.
-double scale_widening(double scale, double north, double east) {
-  constexpr double up = 1.0 + 4.0 * std::numeric_limits<double>::epsilon();
-  return scale * (north + east) * up + std::numeric_limits<double>::min();
+// x > 0 rounded up to 11 significant bits, exactly (a carry out of the mantissa moves
+// to the exponent); infinity, NaN and x <= 0 unchanged.
+double rounded_up_to_11_bits(double x) {
+  if (!(x > 0.0) || x == std::numeric_limits<double>::infinity()) return x;
+  constexpr std::uint64_t low = (std::uint64_t{1} << (52 - 10)) - 1;  // the dropped bits
+  std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+  if (bits & low) bits = (bits | low) + 1;
+  return std::bit_cast<double>(bits);
 }
 
 }  // namespace
@@ -127,17 +133,10 @@ void framed_increments(const SensorPriors& priors, const FrameMargins& frame, Us
     const double s = std::max(frame.scale.at(k), frame.scale.at(k + 1));
     Interval dx = priors.dx[k], dy = priors.dy[k], dz = priors.dz.empty() ? Interval::entire() : priors.dz[k];
     double north = 0.0, east = 0.0;
-    if (m != 0.0) {
-      north = turn_widening(m, priors.turn_east[k], priors.turn_north[k]);
-      east = turn_widening(m, priors.turn_north[k], priors.turn_east[k]);
-    }
-    if (s != 0.0) {
-      const double scale = scale_widening(s, priors.turn_north[k], priors.turn_east[k]);
-      north = add_up(north, scale);
-      east = add_up(east, scale);
-    }
     const bool widened = m != 0.0 || s != 0.0;
     if (widened) {
+      north = frame_widening(m, s, priors.turn_east[k], priors.turn_north[k]);
+      east = frame_widening(m, s, priors.turn_north[k], priors.turn_east[k]);
       dx = dx.inflated(north);
       dy = dy.inflated(east);
     }
@@ -211,21 +210,38 @@ FrameMarginValues margins_within(const Mission& mission, const std::vector<doubl
   FrameMarginValues v;
   v.heading.assign(n, 0.0f);
   v.scale.assign(n, 0.0f);
+  // Both margins grow with the distance, so the distance is first rounded up to 11
+  // significant bits (at most 0.1 % farther): consecutive samples mostly share it, and
+  // the tangent in the heading's bound is taken once per change.
+  double last = std::numeric_limits<double>::quiet_NaN();
+  float heading = 0.0f, scale = 0.0f;
   const auto take = [&](std::size_t k, double farthest) {
-    double heading = meridian_convergence_within(mission.origin.latitude, farthest);
-    double scale = frame_scale_within(farthest);
-    if (!(heading <= zone_heading)) heading = zone_heading;  // also when unbounded there (inf, NaN)
-    if (!(scale <= zone_scale)) scale = zone_scale;
-    v.heading[k] = std::max(v.heading[k], float_up(heading));
-    v.scale[k] = std::max(v.scale[k], float_up(scale));
+    const double distance = rounded_up_to_11_bits(farthest);
+    if (!(distance == last)) {
+      const double h = meridian_convergence_within(mission.origin.latitude, distance);
+      const double s = frame_scale_within(distance);
+      // (capped also when unbounded there: inf, NaN)
+      heading = float_up(h <= zone_heading ? h : zone_heading);
+      scale = float_up(s <= zone_scale ? s : zone_scale);
+      last = distance;
+    }
+    v.heading[k] = heading;
+    v.scale[k] = scale;
   };
-  for (std::size_t k = 0; k + 1 < n; ++k) {
+  // Both margins grow with the distance: each sample takes them once, at the farther of
+  // its two steps' farthest points.
+  const auto step_farthest = [&](std::size_t k) {
     const double half_travel = speed * (0.5 * (mission.time[k + 1] - mission.time[k]));
-    const double farthest = (std::max(reach[k], reach[k + 1]) + half_travel) * kUp;
-    take(k, farthest);
-    take(k + 1, farthest);
-  }
+    return (std::max(reach[k], reach[k + 1]) + half_travel) * kUp;
+  };
   if (n == 1) take(0, reach[0] * kUp);
+  double before = 0.0;  // the step ending at sample k
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    const double after = step_farthest(k);
+    take(k, std::isnan(before) || std::isnan(after) ? after + before : std::max(before, after));
+    before = after;
+  }
+  if (n > 1) take(n - 1, before);
   return v;
 }
 

@@ -106,6 +106,7 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
     // This step's cells by mine (empty: none), appended in mine order.
     std::vector<Interval> row(mines);
     std::size_t earlier = any_kept ? before->waterfall.first_cell_at(first) : 0;
+    double slack_scale = std::numeric_limits<double>::quiet_NaN(), slack = 0.0;
     for (std::size_t k = first; k < last; ++k) {
       // The first chunk runs on the calling thread: it reports for all (they keep pace).
       if (chunk == 0 && on_progress && (k - first) % 8192 == 0) on_progress(static_cast<double>(k - first) / static_cast<double>(last - first));
@@ -128,7 +129,12 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
         plane.altitude = boxes.altitude(k);
         plane.along_tolerance = model.along_track_tolerance;
         plane.depth_band = model.mine_depth_band;
-        plane.frame_slack = sonar_frame_slack(boxes.frame_scale(k), model.sonar_max_range);
+        // (consecutive steps mostly share their scale margin: its slack is kept)
+        if (const double scale = boxes.frame_scale(k); !(scale == slack_scale)) {
+          slack = sonar_frame_slack(scale, model.sonar_max_range);
+          slack_scale = scale;
+        }
+        plane.frame_slack = slack;
         for (const std::size_t i : near) row[i] = feasible_ranges(plane, p, domains.mines[i], model.sonar_side, swath);
       }
       for (std::size_t i = 0; i < mines; ++i)
