@@ -204,8 +204,9 @@ constexpr double kUp = 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
 // origin at each sample's time): over each step, within the farther of its ends plus
 // half the step's travel (the robot is never farther than that from one of them);
 // capped at the zone's margins.
-FrameMarginValues margins_within(const Mission& mission, const std::vector<double>& reach, double speed) {
-  const std::size_t n = reach.size();
+// `reach(k)` is called once per sample, in order.
+template <class Reach>
+FrameMarginValues margins_within(const Mission& mission, std::size_t n, Reach reach, double speed) {
   const double zone_heading = mission.heading_frame_margin, zone_scale = mission.frame_scale_margin;
   FrameMarginValues v;
   v.heading.assign(n, 0.0f);
@@ -228,62 +229,78 @@ FrameMarginValues margins_within(const Mission& mission, const std::vector<doubl
     v.heading[k] = heading;
     v.scale[k] = scale;
   };
-  // Both margins grow with the distance: each sample takes them once, at the farther of
-  // its two steps' farthest points.
-  const auto step_farthest = [&](std::size_t k) {
-    const double half_travel = speed * (0.5 * (mission.time[k + 1] - mission.time[k]));
-    return (std::max(reach[k], reach[k + 1]) + half_travel) * kUp;
-  };
-  if (n == 1) take(0, reach[0] * kUp);
+  if (n == 0) return v;
+  double here = reach(0);
+  if (n == 1) take(0, here * kUp);
+  // Each sample takes the margins once, at the farther of its two steps' farthest
+  // points (NaN, from an empty box, gives the zone's).
   double before = 0.0;  // the step ending at sample k
   for (std::size_t k = 0; k + 1 < n; ++k) {
-    const double after = step_farthest(k);
-    take(k, std::isnan(before) || std::isnan(after) ? after + before : std::max(before, after));
-    before = after;
+    const double next = reach(k + 1);
+    const double half_travel = speed * (0.5 * (mission.time[k + 1] - mission.time[k]));
+    const double after = (std::max(here, next) + half_travel) * kUp;
+    take(k, std::isnan(before) || std::isnan(after) || std::isnan(here) || std::isnan(next)
+                ? std::numeric_limits<double>::quiet_NaN()
+                : std::max(before, after));
+    before = std::isnan(here) || std::isnan(next) ? std::numeric_limits<double>::quiet_NaN() : after;
+    here = next;
   }
   if (n > 1) take(n - 1, before);
   return v;
 }
 
-// The farthest distance from the origin the fixes allow at each sample (infinite
-// without fixes): min over fixes i of r_i + speed |t_k - t_i|, r_i the farthest point
-// of fix i's box. The best fix before a time stays the best as time goes on (all grow
-// at the same rate), so one pass each way finds it.
-std::vector<double> reach_from_fixes(const Mission& m, double speed) {
-  const std::size_t n = m.size(), g = m.gps_time.size();
-  std::vector<double> reach(n, std::numeric_limits<double>::infinity());
-  std::vector<std::size_t> order(g);
-  for (std::size_t i = 0; i < g; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return m.gps_time[a] < m.gps_time[b]; });
-  std::vector<double> fix_reach(g);
-  for (std::size_t i = 0; i < g; ++i) {
-    const double north = std::fabs(m.gps_north[i]) + m.gps_north_halfwidth[i];
-    const double east = std::fabs(m.gps_east[i]) + m.gps_east_halfwidth[i];
-    fix_reach[i] = std::sqrt(north * north + east * east + std::numeric_limits<double>::min()) * kUp;
-  }
-  const auto from = [&](std::size_t i, double t) {
-    return (fix_reach[i] + speed * std::fabs(t - m.gps_time[i])) * kUp;
-  };
-  // Forward: the best fix at or before each sample (g: none yet).
-  std::size_t next = 0, best = g;
-  for (std::size_t k = 0; k < n; ++k) {
-    for (; next < g && m.gps_time[order[next]] <= m.time[k]; ++next) {
-      const std::size_t i = order[next];
-      if (best == g || from(i, m.gps_time[i]) < from(best, m.gps_time[i])) best = i;
+// The farthest distance from the origin the fixes allow at each sample, in sample
+// order (infinite without fixes): min over fixes i of r_i + speed |t - t_i|, r_i the
+// farthest point of fix i's box. The best fix before a time stays the best as time
+// goes on (all grow at the same rate), and likewise after it, so the best fix on each
+// side changes only at fix times: kept per fix, in time order (no array per sample).
+class ReachFromFixes {
+ public:
+  ReachFromFixes(const Mission& m, double speed) : m_(m), speed_(speed), order_(m.gps_time.size()) {
+    const std::size_t g = order_.size();
+    for (std::size_t i = 0; i < g; ++i) order_[i] = i;
+    std::sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) { return m.gps_time[a] < m.gps_time[b]; });
+    fix_reach_.resize(g);
+    for (std::size_t i = 0; i < g; ++i) {
+      const double north = std::fabs(m.gps_north[i]) + m.gps_north_halfwidth[i];
+      const double east = std::fabs(m.gps_east[i]) + m.gps_east_halfwidth[i];
+      fix_reach_[i] = std::sqrt(north * north + east * east + std::numeric_limits<double>::min()) * kUp;
     }
-    if (best != g) reach[k] = from(best, m.time[k]);
-  }
-  // Backward: the best fix at or after each sample.
-  best = g;
-  for (std::size_t k = n, remaining = g; k-- > 0;) {
-    for (; remaining > 0 && m.gps_time[order[remaining - 1]] >= m.time[k]; --remaining) {
-      const std::size_t i = order[remaining - 1];
-      if (best == g || from(i, m.gps_time[i]) < from(best, m.gps_time[i])) best = i;
+    // best_before_[j]: the best of the first j + 1 fixes in time order; best_after_[j]:
+    // the best of fixes j onwards (compared at the later, resp. earlier, fix time).
+    best_before_.resize(g);
+    best_after_.resize(g);
+    for (std::size_t j = 0; j < g; ++j) {
+      const std::size_t i = order_[j];
+      best_before_[j] = j > 0 && !(from(i, m.gps_time[i]) < from(best_before_[j - 1], m.gps_time[i])) ? best_before_[j - 1] : i;
     }
-    if (best != g) reach[k] = std::min(reach[k], from(best, m.time[k]));
+    for (std::size_t j = g; j-- > 0;) {
+      const std::size_t i = order_[j];
+      best_after_[j] = j + 1 < g && !(from(i, m.gps_time[i]) < from(best_after_[j + 1], m.gps_time[i])) ? best_after_[j + 1] : i;
+    }
   }
-  return reach;
-}
+  /// The bound at sample k; k increases from call to call.
+  double operator()(std::size_t k) {
+    const double t = m_.time[k];
+    const std::size_t g = order_.size();
+    while (at_or_before_ < g && m_.gps_time[order_[at_or_before_]] <= t) ++at_or_before_;
+    while (first_after_ < g && m_.gps_time[order_[first_after_]] < t) ++first_after_;
+    double reach = std::numeric_limits<double>::infinity();
+    if (at_or_before_ > 0) reach = from(best_before_[at_or_before_ - 1], t);
+    if (first_after_ < g) reach = std::min(reach, from(best_after_[first_after_], t));
+    return reach;
+  }
+
+ private:
+  double from(std::size_t i, double t) const { return (fix_reach_[i] + speed_ * std::fabs(t - m_.gps_time[i])) * kUp; }
+
+  const Mission& m_;
+  double speed_;
+  std::vector<std::size_t> order_, best_before_, best_after_;
+  std::vector<double> fix_reach_;
+  std::size_t at_or_before_ = 0;  // fixes (in time order) at or before the last sample's time
+  std::size_t first_after_ = 0;   // the first fix at or after it
+};
 
 }  // namespace
 
@@ -293,20 +310,18 @@ FrameMarginValues frame_margins_over(const Mission& mission, const TubeDomains& 
 }
 
 FrameMarginValues frame_margins_over(const Mission& mission, const TubeDomains& tube, double speed) {
-  const std::size_t n = tube.size();
-  if (!has_frame_margins(mission) || n == 0) return {};
+  if (!has_frame_margins(mission)) return {};
   // The farthest distance from the origin within sample k's box.
-  std::vector<double> reach(n);
-  for (std::size_t k = 0; k < n; ++k) {
+  const auto reach = [&](std::size_t k) {
     const double north = tube.px[k].mag(), east = tube.py[k].mag();
-    reach[k] = std::sqrt(north * north + east * east + std::numeric_limits<double>::min()) * kUp;
-  }
-  return margins_within(mission, reach, speed);
+    return std::sqrt(north * north + east * east + std::numeric_limits<double>::min()) * kUp;
+  };
+  return margins_within(mission, tube.size(), reach, speed);
 }
 
 FrameMarginValues frame_margins_from_fixes(const Mission& mission, double speed) {
-  if (!has_frame_margins(mission) || mission.size() == 0) return {};
-  return margins_within(mission, reach_from_fixes(mission, speed), speed);
+  if (!has_frame_margins(mission)) return {};
+  return margins_within(mission, mission.size(), ReachFromFixes(mission, speed), speed);
 }
 
 }  // namespace gesmi

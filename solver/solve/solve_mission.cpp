@@ -85,6 +85,7 @@ bool narrow_frame(const Mission& mission, const SolveInputs& in, const TubeDomai
                   FrameMarginValues& margins, FrameMargins& frame, MissionSolution& s) {
   if (!consistent || !has_frame_margins(mission)) return false;
   const auto start = Clock::now();
+  margins = {};  // (the first pass is done with them: not both in memory at once)
   margins = frame_margins_over(mission, tube, in.max_speed);
   frame = margins.view(mission);
   s.timings_ms["build"] += elapsed_ms(start);
@@ -101,11 +102,16 @@ void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOption
   net = build_network(mission, mission.model, in.fixes, frame);
   s.domains = take_sensor_domains(priors, frame);
   add_network_priors(s.domains, net);
+  // The network and the domains hold the first pass's margins now: not kept in memory
+  // during the propagation (a diagnosis takes them again).
+  margins = {};
+  frame = zone_frame(mission);
   s.timings_ms["build"] += elapsed_ms(start);
   start = Clock::now();
   take_propagation(s.report, solve(net, s.domains, options.propagation));
   s.timings_ms["propagate"] = elapsed_ms(start);
-  if (narrow_frame(mission, in, s.domains, s.report.consistent, margins, frame, s)) {
+  const bool narrowed = narrow_frame(mission, in, s.domains, s.report.consistent, margins, frame, s);
+  if (narrowed) {
     const int first_sweeps = s.report.sweeps;
     // The first pass's enclosure holds under its looser frame: narrowed in place (no
     // copy of the domains) by the sensor domains and network priors under this one.
@@ -122,6 +128,7 @@ void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOption
   if (s.report.consistent || !options.diagnose) return;
   start = Clock::now();
   if (priors.dz.empty()) priors = frameless_sensor_priors(mission, mission.model);  // moved into the first pass
+  if (!narrowed) frame = first_frame(mission, in, true, margins);
   s.report.explained_by = diagnose(net, sensor_domains_in(priors, frame), options.propagation);
   s.timings_ms["diagnose"] = elapsed_ms(start);
 }
