@@ -10,13 +10,14 @@
 #include <sstream>
 
 #include "io/format_error.h"
+#include "tests/support/run_command.h"
 
 namespace gesmi::io {
 namespace {
 
 std::string write_map(const std::string& text) {
-  static int count = 0;
-  const std::string path = ::testing::TempDir() + "/map" + std::to_string(count++) + ".yaml";
+  // In this process's own folder: CTest runs the tests of this file side by side.
+  const std::string path = test::temp_folder("map") + "/map.yaml";
   std::ofstream(path) << text;
   return path;
 }
