@@ -35,7 +35,7 @@ GeoOrigin LocalFrame::to_geodetic(double north, double east) const {
   // The inverse of to_local: the sea-surface point whose projection on the tangent
   // plane is (north, east). That point lies below the plane by about d^2 / 2R, and
   // taking the surface point under (north, east, 0) along its own normal instead
-  // would shift it by about d^3 / 2R^2 (12 mm at 10 km). Solve for its height in the
+  // would shift it by about d^3 / 2R^2 (12 m at 100 km). Solve for its height in the
   // plane's frame: each pass reduces the error by a factor near (d / R)^2.
   double lat = 0, lon = 0, h = 0, up = 0;
   for (int pass = 0; pass < 3; ++pass) {

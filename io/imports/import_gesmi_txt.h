@@ -15,7 +15,7 @@
 //  - x is north and y east, in metres, in a local frame about the origin (as the
 //    simulator reads the Codac mine positions: the file does not say);
 //  - GesmiXy::fixes: every row whose x and y half-widths are given (finite, and below
-//    the local frame's 10 km zone: logs write "unknown" as a huge bound) is a position
+//    the local frame's 100 km zone: logs write "unknown" as a huge bound) is a position
 //    fix with those bounds (stored as a GPS fix in longitude/latitude about the
 //    origin, with per-fix half-widths);
 //  - GesmiXy::truth: x, y and the depth reading are the ground truth, as Codac's
