@@ -12,13 +12,14 @@
 #include "solver/interval/rounding.h"
 #include "solver/mission/frame_scale.h"
 #include "solver/mission/meridian_convergence.h"
+#include "solver/network/frame_margins.h"
 
 namespace gesmi::io {
 
 std::string fix_beyond_zone(double distance) {
   return "the fix is " + format_number(std::round(distance)) + " m from the origin, beyond the " +
          format_number(kLocalFrameZone / 1000.0) +
-         " km zone of the local frame: give an origin nearer the mission (--origin LAT,LON)";
+         " km zone of the local frame: import the log again with an origin nearer the mission (--origin LAT,LON)";
 }
 
 LocalFrame::LocalFrame(const GeoOrigin& origin) : origin_(origin) {}
@@ -68,9 +69,13 @@ double deepest(const Mission& m) {
     deepest = std::max(deepest, depth + std::max(altitude, 0.0));
     if (k + 1 < m.size()) longest = std::max(longest, m.time[k + 1] - m.time[k]);
   }
-  // Between samples the floor under the robot can go deeper, at the depth's and the
-  // altitude's rates, for half the longest step.
-  deepest += (m.model.max_depth_rate + m.model.max_altitude_rate) * longest / 2.0 + m.model.mine_depth_band;
+  // Between samples the floor under the robot can go deeper, for half the longest step:
+  // at the depth's and the altitude's rates (the readings' model), or at the floor's
+  // slope times the speed (the solver's altitude model, SensorBoxes::step_altitude),
+  // whichever is faster.
+  const double slope = m.model.mine_depth_band / m.model.sonar_max_range;
+  const double floor_rate = std::max(m.model.max_depth_rate + m.model.max_altitude_rate, 1.001 * slope * speed_bound(m));
+  deepest += floor_rate * longest / 2.0 + m.model.mine_depth_band;
   return 1.000001 * deepest;  // the few roundings above
 }
 

@@ -52,8 +52,9 @@ class LocalFrame {
 void set_geodetic_gps(Mission& mission);
 
 /// The deepest point the sonar's geometry reaches (m): the floor under the robot, its
-/// largest depth plus altitude readings with their bounds, plus what the depth's and
-/// the altitude's rates add over half the longest step, plus the mine's depth band
+/// largest depth plus altitude readings with their bounds, plus what the floor's rate
+/// adds over half the longest step (the faster of max_depth_rate + max_altitude_rate
+/// and the floor's slope times speed_bound()), plus the mine's depth band
 /// (Mission::depth_scale_margin).
 double deepest(const Mission& mission);
 

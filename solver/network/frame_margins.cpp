@@ -31,7 +31,9 @@ float float_up(double x) {
 // the last place, and underflow by the smallest normal number.
 double frame_widening(double turn, double scale, double other, double own) {
   constexpr double up = 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
-  return (turn * other + 0.5 * turn * turn * own + scale * (other + own)) * up + std::numeric_limits<double>::min();
+  const double widening = (turn * other + 0.5 * turn * turn * own + scale * (other + own)) * up;
+  // (a zero margin times an infinite integral is NaN: the widening is then unbounded)
+  return std::isnan(widening) ? std::numeric_limits<double>::infinity() : widening + std::numeric_limits<double>::min();
 }
 
 // x > 0 rounded up to 11 significant bits, exactly (a carry out of the mantissa moves

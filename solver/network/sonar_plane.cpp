@@ -48,6 +48,11 @@ bool SonarPlane::may_hold(const Vec3I& rough_body_offset, SonarSide on) const {
   return true;
 }
 
+Interval SonarPlane::possible_ranges(const Vec3I& q, const Vec3I& m) const {
+  return sqrt(sqr((q[0] - m[0]).inflated(frame_slack)) + sqr((q[1] - m[1]).inflated(frame_slack)) +
+              sqr((q[2] - m[2]).inflated(frame_slack)));
+}
+
 Interval SonarPlane::vertical() const { return -(altitude + Interval(-depth_band, depth_band)); }
 
 namespace {

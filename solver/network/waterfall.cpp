@@ -27,7 +27,7 @@ Interval feasible_ranges(const SonarPlane& plane, const Vec3I& p, const Vec3I& m
   const Vec3I rough = plane.rough_body_offset(p, m);
   if (!plane.may_hold(rough, SonarSide::starboard) && !plane.may_hold(rough, SonarSide::port))
     return Interval::empty();  // out of the sonar plane at this step
-  const Interval distance = box_distance(p, m);
+  const Interval distance = plane.possible_ranges(p, m);
   if (!distance.intersects(swath)) return Interval::empty();
   const Interval reach = intersect(distance, swath);
   Interval ranges = Interval::empty();
@@ -114,8 +114,15 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
       const bool kept_step = any_kept && same_positions(domains, before->domains, k);
       std::fill(row.begin(), row.end(), Interval::empty());
       near.clear();
+      // (consecutive steps mostly share their scale margin: its slack is kept)
+      if (const double scale = boxes.frame_scale(k); !(scale == slack_scale)) {
+        slack = sonar_frame_slack(scale, model.sonar_max_range);
+        slack_scale = scale;
+      }
+      // The slack moves each axis of the offset, so the distance by at most sqrt(3) < 2 times it.
+      const double reach = add_up(model.sonar_max_range, 2.0 * slack);
       for (std::size_t i = 0; i < mines; ++i)
-        if (!(kept_step && mine_kept[i]) && !boxes_beyond(p, domains.mines[i], model.sonar_max_range)) near.push_back(i);
+        if (!(kept_step && mine_kept[i]) && !boxes_beyond(p, domains.mines[i], reach)) near.push_back(i);
       if (kept_step) {
         const Waterfall& w = before->waterfall;
         while (earlier < w.cells() && static_cast<std::size_t>(w.step[earlier]) < k) ++earlier;
@@ -129,11 +136,6 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
         plane.altitude = boxes.altitude(k);
         plane.along_tolerance = model.along_track_tolerance;
         plane.depth_band = model.mine_depth_band;
-        // (consecutive steps mostly share their scale margin: its slack is kept)
-        if (const double scale = boxes.frame_scale(k); !(scale == slack_scale)) {
-          slack = sonar_frame_slack(scale, model.sonar_max_range);
-          slack_scale = scale;
-        }
         plane.frame_slack = slack;
         for (const std::size_t i : near) row[i] = feasible_ranges(plane, p, domains.mines[i], model.sonar_side, swath);
       }

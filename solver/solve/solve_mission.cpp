@@ -103,15 +103,14 @@ void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOption
   s.domains = take_sensor_domains(priors, frame);
   add_network_priors(s.domains, net);
   // The network and the domains hold the first pass's margins now: not kept in memory
-  // during the propagation (a diagnosis takes them again).
+  // during the propagation.
   margins = {};
   frame = zone_frame(mission);
   s.timings_ms["build"] += elapsed_ms(start);
   start = Clock::now();
   take_propagation(s.report, solve(net, s.domains, options.propagation));
   s.timings_ms["propagate"] = elapsed_ms(start);
-  const bool narrowed = narrow_frame(mission, in, s.domains, s.report.consistent, margins, frame, s);
-  if (narrowed) {
+  if (narrow_frame(mission, in, s.domains, s.report.consistent, margins, frame, s)) {
     const int first_sweeps = s.report.sweeps;
     // The first pass's enclosure holds under its looser frame: narrowed in place (no
     // copy of the domains) by the sensor domains and network priors under this one.
@@ -128,8 +127,12 @@ void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOption
   if (s.report.consistent || !options.diagnose) return;
   start = Clock::now();
   if (priors.dz.empty()) priors = frameless_sensor_priors(mission, mission.model);  // moved into the first pass
-  if (!narrowed) frame = first_frame(mission, in, true, margins);
-  s.report.explained_by = diagnose(net, sensor_domains_in(priors, frame), options.propagation);
+  // The diagnosis asks which single mark or fix is wrong: margins from the fixes, or
+  // over a tube that trusted every datum, would presume the answer, so it takes the
+  // zone's (sound whichever datum is wrong).
+  const FrameMargins zone = zone_frame(mission);
+  s.report.explained_by =
+      diagnose(build_network(mission, mission.model, in.fixes, zone), sensor_domains_in(priors, zone), options.propagation);
   s.timings_ms["diagnose"] = elapsed_ms(start);
 }
 

@@ -154,6 +154,8 @@ TEST(Geodesy, DepthScaleMarginHoldsTheDepthEffect) {
   m.depth = {5.0, 80.0, 12.0};
   m.altitude = {3.0, 2.0, 4.0};
   m.time = {0.0, 1.0, 2.0};
+  // (speeds of 1 m/s at most: the depth's and altitude's rates are the faster)
+  for (auto* v : {&m.roll, &m.pitch, &m.heading, &m.vx, &m.vy, &m.vz}) v->assign(3, 0.1);
   const double band = m.model.mine_depth_band, rates = 0.5 * (m.model.max_depth_rate + m.model.max_altitude_rate);
   EXPECT_GE(deepest(m), 80.0 + m.model.depth_absolute + m.model.depth_relative * 80.0 + 2.0 + m.model.altitude + band);
   m.half_widths.depth = {1.0, 0.5, 100.0};
@@ -167,8 +169,13 @@ TEST(Geodesy, DepthScaleMarginHoldsTheDepthEffect) {
   m.gps_latitude = {m.origin.latitude};
   m.gps_longitude = {m.origin.longitude};
   fill_local_gps(m, "m");
-  EXPECT_EQ(m.depth_scale_margin, depth_scale_within(deepest(m)));
-  EXPECT_EQ(m.frame_scale_margin, frame_scale_within(kLocalFrameZone));
+  const double floor = 116.5 + rates + band;
+  EXPECT_GE(m.depth_scale_margin, floor / (kRadius - floor));
+  EXPECT_LE(m.depth_scale_margin, 1.02 * (floor + 0.001) / kRadius);
+  // The frame's margin holds the scale measured at the zone's edge.
+  const LocalFrame frame(m.origin);
+  const GeoOrigin edge = destination(m.origin, 30.0, kZone - 10.0), step = destination(edge, 30.0, 10.0);
+  EXPECT_GE(m.frame_scale_margin, 1.0 - frame_distance(frame, edge, step) / surface_distance(edge, step));
 }
 
 TEST(Geodesy, GpsBoxesAreWidenedAndHoldTheFixes) {

@@ -4,7 +4,9 @@
 // plane's projections of their surface points, depths along their own verticals)
 // differs from the sonar's offset at the robot by up to sonar_frame_slack(), which
 // SonarPlane::contract takes: with it the truth stays in millimetre boxes; without it
-// (the negative control) the contraction loses the truth where the beam is radial.
+// (the negative control) the contraction, or the waterfall's pre-filter on the
+// distances the boxes allow (SonarPlane::possible_ranges), loses the truth where the
+// beam is radial.
 
 #include <GeographicLib/Geodesic.hpp>
 #include <GeographicLib/LocalCartesian.hpp>
@@ -72,6 +74,8 @@ Scene scene(const GeoOrigin& origin, double azimuth, double distance, double bea
 
 bool keeps_truth(Scene s, double slack) {
   s.plane.frame_slack = slack;
+  // The waterfall's pre-filter first (the distances the boxes allow), then the contraction.
+  s.range = intersect(s.range, s.plane.possible_ranges(s.q, s.m));
   if (!s.plane.contract(s.q, s.m, s.range)) return false;
   for (int i = 0; i < 3; ++i)
     if (!s.q[i].contains(s.truth_q[i]) || !s.m[i].contains(s.truth_m[i])) return false;
@@ -104,6 +108,24 @@ TEST(SonarFrameGeodesy, TheSlackKeepsTheTruthAnywhereInTheZone) {
   // Negative control: 90 km out with a radial beam the frame shrinks the offset by
   // about 4.5 mm, beyond the millimetre boxes.
   EXPECT_EQ(lost_without, radial);
+}
+
+TEST(SonarFrameGeodesy, ThePreFilterAllowsTheTrueRange) {
+  int excluded_without = 0, radial = 0;
+  for (const GeoOrigin& origin : kOrigins)
+    for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0)
+      for (const double turn : {0.0, 90.0, 180.0, 270.0}) {
+        Scene s = scene(origin, azimuth, 90000.0, azimuth + turn);
+        const double true_range = std::hypot(45.0, 10.0);
+        s.plane.frame_slack = sonar_frame_slack(frame_scale_within(90100.0) + depth_scale_within(31.0), 50.0);
+        EXPECT_TRUE(s.plane.possible_ranges(s.q, s.m).contains(true_range)) << origin.latitude << " " << azimuth;
+        if (turn == 0.0 || turn == 180.0) {
+          ++radial;
+          s.plane.frame_slack = 0.0;
+          excluded_without += !s.plane.possible_ranges(s.q, s.m).contains(true_range);
+        }
+      }
+  EXPECT_EQ(excluded_without, radial);  // the distance of the frame's boxes alone misses it
 }
 
 }  // namespace

@@ -92,7 +92,7 @@ TEST(BadInput, ImportNavNamesFileLineFieldAndReason) {
       {"gps after the end", {{"nav.csv", kNav}, {"gps.csv", "time,longitude,latitude\n0.3,-4.4,48.2\n"}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv"},
        {"@/gps.csv:2: time: 0.3 s is outside the mission [0, 0.2] s"}},
       {"gps far away", {{"nav.csv", kNav}, {"gps.csv", kGps}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--origin", "49.2,-4.458"},
-       {"@/gps.csv:2: longitude, latitude: the fix is", "beyond the 100 km zone of the local frame: give an origin nearer the mission"}},
+       {"@/gps.csv:2: longitude, latitude: the fix is", "beyond the 100 km zone of the local frame: import the log again with an origin nearer the mission"}},
       {"gps missing latitude", {{"nav.csv", kNav}, {"gps.csv", "time,longitude,latitude\n0,-4.4\n"}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv"},
        {"@/gps.csv:2: latitude: missing column"}},
       {"empty marks", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"marks.csv", ""}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--marks", "@/marks.csv", "--mines", "1"},

@@ -26,16 +26,32 @@ bool holds(const Interval& x, long double value) { return x.lo() <= value && val
 // A per-sample margin as the solver stores it: a float at or above the value.
 float float_above(double x) { return std::nextafter(static_cast<float>(x), INFINITY); }
 
+// How the DVL's horizontal world velocity differs from the frame's: u = A p, A a 2 × 2
+// matrix on (north, east). The frame shrinks the radial part of a surface velocity by
+// up to 1 - s (u = p + s / (1 - s) (p.r) r, r the radial direction); the depth slows
+// the robot against its surface point (u = (1 - s) p).
+struct Distortion {
+  double nn = 1.0, ne = 0.0, en = 0.0, ee = 1.0;
+  static Distortion uniform(double factor) { return {factor, 0.0, 0.0, factor}; }
+  static Distortion radial(double scale, double azimuth) {
+    const double k = scale / (1.0 - scale), rn = std::cos(azimuth), re = std::sin(azimuth);
+    return {1.0 + k * rn * rn, k * rn * re, k * rn * re, 1.0 + k * re * re};
+  }
+};
+
 // Steps whose increment misses the truth's displacement, when the readings come from
-// a north turned by `turn` and the DVL's horizontal speeds are `speed_factor` times the
+// a north turned by `turn` and the DVL's horizontal velocity is `distortion` of the
 // frame's, and the domains are widened for `margins` (per sample).
 int misses(const SmoothTruth& truth, const SensorModel& model, double turn, double heading_error,
-           const FrameMargins& margins, std::size_t samples, std::uint64_t seed, double speed_factor = 1.0) {
+           const FrameMargins& margins, std::size_t samples, std::uint64_t seed, Distortion distortion = {}) {
   // The gyrocompass reads psi_true = psi_local - turn, plus its error.
   Mission m = test::mission_of(truth, model, samples, seed, heading_error - turn);
   for (std::size_t k = 0; k < m.size(); ++k) {  // (roll and pitch are zero: vx, vy are horizontal)
-    m.vx[k] *= speed_factor;
-    m.vy[k] *= speed_factor;
+    const double c = std::cos(m.heading[k]), s = std::sin(m.heading[k]);
+    const double north = c * m.vx[k] - s * m.vy[k], east = s * m.vx[k] + c * m.vy[k];
+    const double n = distortion.nn * north + distortion.ne * east, e = distortion.en * north + distortion.ee * east;
+    m.vx[k] = c * n + s * e;
+    m.vy[k] = -s * n + c * e;
   }
   const TubeDomains d = sensor_domains_in(frameless_sensor_priors(m, model), margins);
   int outside = 0;
@@ -96,16 +112,24 @@ TEST(HeadingFrame, ScaledIncrementsHoldTheDisplacementForEveryStepModel) {
   for (const StepModel step : {StepModel::trapezoid, StepModel::rate_hull, StepModel::sample}) {
     const SensorModel model = test::model_with(step, 1.0);
     for (const SmoothTruth& truth : truths_for(step))
-      for (const double scale : {1e-4, 1e-3, 0.01})
-        for (const double factor : {1.0 / (1.0 - scale), 1.0 - scale})
+      for (const double scale : {1e-4, 1e-3, 0.01}) {
+        // Uniform (either way), and a radial shrink across the track: the frame's error
+        // then falls on the other axis too.
+        const double track = static_cast<double>(truth.heading);
+        const Distortion distortions[] = {Distortion::uniform(1.0 / (1.0 - scale)), Distortion::uniform(1.0 - scale),
+                                          Distortion::radial(scale, track + std::numbers::pi / 4),
+                                          Distortion::radial(scale, track - std::numbers::pi / 4),
+                                          Distortion::radial(scale, std::numbers::pi / 4)};
+        for (const Distortion& distortion : distortions)
           for (const double turn : {0.0, 0.01}) {
             std::vector<float> margins(300, float_above(scale));
             for (std::size_t k = 0; k < margins.size(); k += 7) margins[k] = float_above(1.5 * scale);  // per sample
-            const FrameMargins frame{{0.01, {}}, {0.0, margins}};
-            EXPECT_EQ(misses(truth, model, turn, 0.99 * model.heading, frame, margins.size(), seed++, factor), 0)
-                << static_cast<int>(step) << " heading " << static_cast<double>(truth.heading) << " scale " << scale
-                << " factor " << factor << " turn " << turn;
+            const FrameMargins frame{{turn, {}}, {0.0, margins}};
+            EXPECT_EQ(misses(truth, model, turn, 0.99 * model.heading, frame, margins.size(), seed++, distortion), 0)
+                << static_cast<int>(step) << " heading " << track << " scale " << scale << " distortion " << distortion.nn
+                << " " << distortion.ne << " turn " << turn;
           }
+      }
   }
 }
 
@@ -117,7 +141,8 @@ TEST(HeadingFrame, TheTestCatchesAScaleMarginSmallerThanTheScale) {
     int outside = 0;
     std::uint64_t seed = 71;
     for (const SmoothTruth& truth : truths_for(StepModel::trapezoid))
-      outside += misses(truth, model, 0.0, 0.0, FrameMargins{{}, {part * 0.01, {}}}, 300, seed++, 1.0 / (1.0 - 0.01));
+      outside += misses(truth, model, 0.0, 0.0, FrameMargins{{}, {part * 0.01, {}}}, 300, seed++,
+                        Distortion::uniform(1.0 / (1.0 - 0.01)));
     EXPECT_GT(outside, 100) << "scale margin at " << part << " of the scale";
   }
 }
@@ -189,9 +214,9 @@ TEST(HeadingFrame, SpeedBoundHoldsTheFarthestCornerOfEveryDvlBox) {
 namespace gesmi {
 namespace {
 
-// frame_margins_from_fixes() against the farthest distance the fixes allow, found by
-// sampling each step densely in long double: at time t the robot is within
-// min over fixes i of (farthest point of fix i's box + speed |t - t_i|) of the origin.
+// frame_margins_from_fixes() against the farthest distance the fixes allow over each
+// step, found exactly in long double: at time t the robot is within min over fixes i of
+// (farthest point of fix i's box + speed |t - t_i|) of the origin.
 TEST(FrameMarginsFromFixes, HoldTheFarthestPointTheFixesAllowOnEveryStep) {
   std::uint64_t state = 17;
   const auto unit = [&] {
@@ -220,17 +245,28 @@ TEST(FrameMarginsFromFixes, HoldTheFarthestPointTheFixesAllowOnEveryStep) {
     ASSERT_EQ(v.heading.size(), m.size());
     std::vector<double> loosest(m.size(), 0.0);  // per sample: the bound a step's length farther out
     for (std::size_t k = 0; k + 1 < m.size(); ++k) {
-      long double farthest = m.gps_time.empty() ? INFINITY : 0.0L;
-      for (int j = 0; j <= 40; ++j) {
-        const long double at = m.time[k] + (static_cast<long double>(m.time[k + 1]) - m.time[k]) * j / 40.0L;
-        long double nearest = INFINITY;
-        for (std::size_t i = 0; i < m.gps_time.size(); ++i) {
-          const long double north = std::fabs(static_cast<long double>(m.gps_north[i])) + m.gps_north_halfwidth[i];
-          const long double east = std::fabs(static_cast<long double>(m.gps_east[i])) + m.gps_east_halfwidth[i];
-          nearest = std::min(nearest, std::sqrt(north * north + east * east) + speed * std::fabs(at - m.gps_time[i]));
-        }
-        farthest = std::max(farthest, nearest);
+      // f(t) = min over fixes of (r_i + speed |t - t_i|) is piecewise linear: its maximum
+      // over the step is at an end or where a fix's rising side meets another's falling
+      // side, t = (r_j - r_i + speed (t_i + t_j)) / (2 speed).
+      const std::size_t g = m.gps_time.size();
+      std::vector<long double> r(g);
+      for (std::size_t i = 0; i < g; ++i) {
+        const long double north = std::fabs(static_cast<long double>(m.gps_north[i])) + m.gps_north_halfwidth[i];
+        const long double east = std::fabs(static_cast<long double>(m.gps_east[i])) + m.gps_east_halfwidth[i];
+        r[i] = std::sqrt(north * north + east * east);
       }
+      const auto nearest = [&](long double at) {
+        long double best = INFINITY;
+        for (std::size_t i = 0; i < g; ++i) best = std::min(best, r[i] + speed * std::fabs(at - m.gps_time[i]));
+        return best;
+      };
+      const long double a = m.time[k], b = m.time[k + 1];
+      long double farthest = std::max(nearest(a), nearest(b));
+      for (std::size_t i = 0; i < g; ++i)
+        for (std::size_t j = 0; j < g; ++j) {
+          const long double at = (r[j] - r[i] + speed * (static_cast<long double>(m.gps_time[i]) + m.gps_time[j])) / (2 * speed);
+          if (a < at && at < b) farthest = std::max(farthest, nearest(at));
+        }
       const double d = static_cast<double>(farthest);
       const double heading = std::min(m.heading_frame_margin, meridian_convergence_within(m.origin.latitude, d));
       const double scale = std::min(m.frame_scale_margin, frame_scale_within(d));
