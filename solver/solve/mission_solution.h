@@ -41,6 +41,10 @@ struct SolveReport {
   /// Warm reruns: constraints applied; and why the rerun was solved cold, if it was.
   std::size_t work_items = 0;
   std::optional<std::string> cold_fallback;
+  /// The farthest the solved tube reaches from the origin (m) where the frame's margins
+  /// were capped at the zone's: the result there assumes the robot stayed in the zone
+  /// (frame_margins.h); 0 when it never left it or the mission has no frame.
+  double beyond_frame_zone = 0.0;
 };
 
 struct MissionSolution {

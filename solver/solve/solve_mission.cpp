@@ -88,6 +88,7 @@ bool narrow_frame(const Mission& mission, const SolveInputs& in, const TubeDomai
   margins = {};  // (the first pass is done with them: not both in memory at once)
   margins = frame_margins_over(mission, tube, in.max_speed);
   frame = margins.view(mission);
+  s.report.beyond_frame_zone = margins.beyond_zone;
   s.timings_ms["build"] += elapsed_ms(start);
   return true;
 }
@@ -187,6 +188,7 @@ void solve_warm(const Mission& mission, const SolveInputs& in, const SolveOption
     const auto start = Clock::now();
     const FrameMarginValues margins = frame_margins_over(mission, previous.domains, in.max_speed);
     net = build_network(mission, mission.model, in.fixes, margins.view(mission));
+    s.report.beyond_frame_zone = margins.beyond_zone;
     s.timings_ms["build"] += elapsed_ms(start);
     warm = detail::warm_domains(mission, net, previous, why);
   }

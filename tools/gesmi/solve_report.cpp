@@ -13,6 +13,12 @@ namespace gesmi::cli {
 void print_solve_notes(const MissionSolution& s) {
   const SolveReport& r = s.report;
   if (r.cold_fallback) std::fprintf(stderr, "gesmi solve: %s; solving cold\n", r.cold_fallback->c_str());
+  if (r.beyond_frame_zone > 0.0)
+    std::fprintf(stderr,
+                 "gesmi solve: warning: the tube reaches %.0f m from the origin, beyond the local frame's zone; the frame's "
+                 "bounds there assume the robot stayed within it: import the log again with an origin nearer the mission "
+                 "(--origin LAT,LON)\n",
+                 r.beyond_frame_zone);
   if (!r.consistent || r.minimal_outliers == 0 || r.hypotheses.empty()) return;
   std::fprintf(stderr, "gesmi solve: consistent with %d outlier(s); %zu hypothesis(es) restore consistency:\n",
                r.minimal_outliers, r.hypotheses.size());
@@ -52,7 +58,8 @@ void print_solve_stats(const Mission& m, const MissionSolution& s, const std::ma
                      ", \"converged\": " + (s.report.converged ? "true" : "false") +
                      ", \"steps\": " + std::to_string(m.size()) + ", \"marks\": " + std::to_string(m.mark_count()) +
                      ", \"max_tube_width_m\": " + json_number(s.domains.max_horizontal_width()) +
-                     ", \"work_items\": " + std::to_string(s.report.work_items) + ", \"files\": [";
+                     ", \"work_items\": " + std::to_string(s.report.work_items) +
+                     ", \"beyond_frame_zone_m\": " + json_number(s.report.beyond_frame_zone) + ", \"files\": [";
   for (std::size_t i = 0; i < written.size(); ++i) json += (i ? ", " : "") + json_string(written[i]);
   json += "], \"timings_ms\": {";
   bool first = true;

@@ -43,6 +43,7 @@ py::dict report_dict(const SolveReport& r) {
   d["hypotheses"] = hypotheses;
   d["removal_sets"] = r.removal_sets;
   d["work_items"] = r.work_items;
+  d["beyond_frame_zone"] = r.beyond_frame_zone;
   d["cold_fallback"] = r.cold_fallback ? py::object(py::str(*r.cold_fallback)) : py::object(py::none());
   if (r.explained_by) {
     py::list refs;
