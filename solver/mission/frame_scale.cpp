@@ -1,8 +1,7 @@
 #include "solver/mission/frame_scale.h"
 
 #include <algorithm>
-
-#include "solver/interval/rounding.h"
+#include <limits>
 
 namespace gesmi {
 
@@ -13,8 +12,12 @@ double frame_scale_within(double distance) {
 double depth_scale_within(double depth) { return 1.01 * (std::max(depth, 0.0) / kWgs84SmallestRadius); }
 
 double sonar_frame_slack(double scale, double range) {
-  const double drop = mul_up(1.01, div_up(mul_up(range, range), 2.0 * kWgs84SmallestRadius));
-  return add_up(mul_up(scale, range), drop);
+  // Plain doubles: every term is non-negative, so the six roundings to nearest are
+  // covered by a relative 8 units in the last place, and underflow by the smallest
+  // normal number.
+  constexpr double up = 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
+  const double drop = 1.01 * (range * range / (2.0 * kWgs84SmallestRadius));
+  return (scale * range + drop) * up + std::numeric_limits<double>::min();
 }
 
 }  // namespace gesmi
