@@ -119,6 +119,8 @@ TEST(SonarFrameGeodesy, ThePreFilterAllowsTheTrueRange) {
         const double true_range = std::hypot(45.0, 10.0);
         s.plane.frame_slack = sonar_frame_slack(frame_scale_within(90100.0) + depth_scale_within(31.0), 50.0);
         EXPECT_TRUE(s.plane.possible_ranges(s.q, s.m).contains(true_range)) << origin.latitude << " " << azimuth;
+        // The pre-rejection of the waterfall, for a sonar whose largest range is this one.
+        EXPECT_FALSE(boxes_beyond(s.q, s.m, true_range + 2.0 * s.plane.frame_slack)) << origin.latitude << " " << azimuth;
         if (turn == 0.0 || turn == 180.0) {
           ++radial;
           s.plane.frame_slack = 0.0;
