@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
-#include <unistd.h>
 
 #include "io/output/atomic_output.h"
 #include "io/format_error.h"
@@ -122,21 +121,6 @@ std::string components_csv(const LocalizationProblem& p, const LocalizationResul
          (h.contains_truth ? "1" : "0") + "\n";
   }
   return s;
-}
-
-void check_output_folder(const std::string& folder) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (folder.empty()) throw FormatError("output folder: empty name");
-  const fs::path path(folder);
-  if (fs::exists(path, ec)) {
-    if (!fs::is_directory(path, ec)) throw FormatError(folder + ": exists and is not a folder");
-    if (::access(path.c_str(), W_OK) != 0) throw FormatError(folder + ": folder is not writable");
-    return;
-  }
-  const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  if (!fs::is_directory(parent, ec)) throw FormatError(folder + ": parent folder " + parent.string() + " does not exist");
-  if (::access(parent.c_str(), W_OK) != 0) throw FormatError(folder + ": parent folder " + parent.string() + " is not writable");
 }
 
 std::vector<std::string> write_localization_outputs(const std::string& folder, const LocalizationProblem& p,

@@ -24,8 +24,4 @@ std::string components_csv(const LocalizationProblem& problem, const Localizatio
 std::vector<std::string> write_localization_outputs(const std::string& folder, const LocalizationProblem& problem,
                                                     const LocalizationResult& result);
 
-/// Checks before solving that `folder` exists and is writable or can be created
-/// (its parent exists and is writable); throws FormatError naming it.
-void check_output_folder(const std::string& folder);
-
 }  // namespace gesmi::io

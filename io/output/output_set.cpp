@@ -57,17 +57,36 @@ void OutputSet::check(const std::string& path) const {
       throw FormatError(path + ": is also an input of this command (" + input + "); write to another file");
 }
 
-void OutputSet::prepare_folder(const std::string& folder) {
+namespace {
+
+// The folder's path without a trailing separator ("out/" and "out" are one folder).
+fs::path folder_path(const std::string& folder) {
+  fs::path path = fs::path(folder).lexically_normal();
+  if (!path.has_filename() && path.has_parent_path() && path != path.root_path()) path = path.parent_path();
+  return path;
+}
+
+}  // namespace
+
+void OutputSet::check_folder(const std::string& folder) {
   std::error_code ec;
-  if (fs::exists(fs::symlink_status(folder, ec))) {
-    if (!fs::is_directory(folder, ec)) throw FormatError(folder + ": exists and is not a folder");
-    if (::access(folder.c_str(), W_OK) != 0) throw FormatError(folder + ": folder is not writable");
+  if (folder.empty()) throw FormatError("output folder: empty name");
+  const fs::path path = folder_path(folder);
+  if (fs::exists(fs::symlink_status(path, ec))) {
+    if (!fs::is_directory(path, ec)) throw FormatError(folder + ": exists and is not a folder");
+    if (::access(path.c_str(), W_OK) != 0) throw FormatError(folder + ": folder is not writable");
     return;
   }
-  const fs::path path = fs::path(folder).lexically_normal();
   const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
   if (!fs::is_directory(parent, ec)) throw FormatError(folder + ": parent folder " + parent.string() + " does not exist");
   if (::access(parent.c_str(), W_OK) != 0) throw FormatError(folder + ": parent folder " + parent.string() + " is not writable");
+}
+
+void OutputSet::prepare_folder(const std::string& folder) {
+  check_folder(folder);
+  const fs::path path = folder_path(folder);
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) return;
   if (!fs::create_directory(path, ec) || ec) throw FormatError(folder + ": cannot create the folder: " + ec.message());
   created_folders_.emplace_back(path.string(), track_temporary(path.string(), true));
 }

@@ -31,7 +31,12 @@ class OutputSet {
   /// Refuses `path` as an output (FormatError naming it): an input, an existing
   /// non-regular file, a folder that does not exist or cannot be written.
   void check(const std::string& path) const;
-  /// An output folder: created if missing (removed again on failure if still empty).
+  /// Refuses `folder` as an output folder (FormatError naming it): a file, a folder that
+  /// cannot be written, or a missing folder whose parent does not exist or cannot be
+  /// written. A trailing separator ("out/") names the same folder.
+  static void check_folder(const std::string& folder);
+  /// An output folder: checked, created if missing (removed again on failure if still
+  /// empty).
   void prepare_folder(const std::string& folder);
   /// A file that belongs with this set (a sibling such as RESULT.mines.csv): when the
   /// set commits without having written it, a copy left by an earlier run is removed,

@@ -77,7 +77,7 @@ int run_localize(std::span<const std::string> args) {
   if (!values.count("output")) throw UsageError(std::string("missing -o OUT_DIR; usage: ") + kUsage);
   const std::string folder = values["output"].as<std::string>();
   io::OutputSet outputs(input_files(values, {"scenario"}));
-  io::check_output_folder(folder);
+  io::OutputSet::check_folder(folder);  // before the search, which can be long
   const LocalizationResult result = localize(problem);
   outputs.prepare_folder(folder);
   io::write_localization_outputs(folder, problem, result);

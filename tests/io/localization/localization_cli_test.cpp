@@ -97,6 +97,16 @@ TEST(LocalizeCli, BadInputIsOneLineExitTwoAndNothingWritten) {
   }
 }
 
+TEST(LocalizeCli, AFolderNamedWithATrailingSlashIsCreated) {
+  // As the README shows it: -o out/ for a folder that does not exist yet.
+  const std::string out = temp_folder("localize") + "/fresh/";
+  const CommandResult r = run_gesmi({"localize", scenario("triangle_two_hypotheses.yaml"), "-o", out, "--quiet"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out + "summary.txt"));
+  // And again into the folder that now exists.
+  EXPECT_EQ(run_gesmi({"localize", scenario("triangle_two_hypotheses.yaml"), "-o", out, "--quiet"}).exit_code, 0);
+}
+
 TEST(LocalizeCli, MissingOutputFolderParentIsRefusedBeforeSolving) {
   const CommandResult r = run_gesmi({"localize", scenario("triangle_two_hypotheses.yaml"), "-o", "/no/such/parent/out"});
   EXPECT_EQ(r.exit_code, 2);
