@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "io/format_error.h"
+#include "io/io_version.h"
 #include "io/text/message_text.h"
 #include "tools/gesmi/command.h"
 
@@ -31,7 +32,8 @@ void print_help() {
   for (const Command& c : sorted)
     std::printf("  %-12.*s %.*s\n", static_cast<int>(c.name.size()), c.name.data(), static_cast<int>(c.summary.size()),
                 c.summary.data());
-  std::printf("\n'gesmi <command> --help' describes a command. Exit codes: 0 ok, 2 bad input, 3 inconsistent data.\n");
+  std::printf("\n'gesmi <command> --help' describes a command; 'gesmi --version' prints the version. Exit codes: 0 ok, "
+              "2 bad input, 3 inconsistent data.\n");
 }
 
 // Every message leaves through here: one line whatever it holds (control characters
@@ -49,6 +51,10 @@ int main(int argc, char** argv) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     print_help();
     return args.empty() ? kExitBadInput : kExitOk;
+  }
+  if (args[0] == "--version" || args[0] == "-V") {
+    std::printf("gesmi %.*s\n", static_cast<int>(gesmi::io::version().size()), gesmi::io::version().data());
+    return kExitOk;
   }
   const auto& all = commands();
   const auto found = std::find_if(all.begin(), all.end(), [&](const Command& c) { return c.name == args[0]; });
