@@ -8,7 +8,7 @@ packages="build-essential cmake pkg-config
  libpixman-1-dev libfontconfig-dev libfreetype-dev
  libgtest-dev libgmock-dev libbenchmark-dev libmpfi-dev libmpfr-dev libgmp-dev
  python3 python3-dev pybind11-dev python3-numpy python3-h5py python3-matplotlib python3-pytest python3-nmea2
- help2man"
+ help2man parallel"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -123,6 +123,12 @@ std::string components_csv(const LocalizationProblem& p, const LocalizationResul
   return s;
 }
 
+std::vector<std::string> localization_output_files(const std::string& folder) {
+  const std::string base = (std::filesystem::path(folder) / "").string();
+  return {base + "inner.csv",   base + "boundary.csv", base + "components.csv",
+          base + "summary.txt", base + "paving.h5",    base + "paving.png"};
+}
+
 std::vector<std::string> write_localization_outputs(const std::string& folder, const LocalizationProblem& p,
                                                     const LocalizationResult& r) {
   namespace fs = std::filesystem;
@@ -134,20 +140,20 @@ std::vector<std::string> write_localization_outputs(const std::string& folder, c
     for (std::size_t i : r.hypotheses[k].component.inner) inner_component[i] = static_cast<int>(k + 1);
     for (std::size_t i : r.hypotheses[k].component.boundary) boundary_component[i] = static_cast<int>(k + 1);
   }
-  const std::string base = (fs::path(folder) / "").string();
+  const std::vector<std::string> files = localization_output_files(folder);
   std::vector<std::string> written;
-  const auto text = [&](const std::string& name, const std::string& content) {
-    write_text_file(base + name, content);
-    written.push_back(base + name);
+  const auto text = [&](const std::string& path, const std::string& content) {
+    write_text_file(path, content);
+    written.push_back(path);
   };
-  text("inner.csv", paving_csv(r.paving.inner, inner_component));
-  text("boundary.csv", paving_csv(r.paving.boundary, boundary_component));
-  text("components.csv", components_csv(p, r));
-  text("summary.txt", localization_summary(p, r));
-  write_localization_hdf5(base + "paving.h5", p, r);
-  written.push_back(base + "paving.h5");
-  write_localization_picture(base + "paving.png", p, r);
-  written.push_back(base + "paving.png");
+  text(files[0], paving_csv(r.paving.inner, inner_component));
+  text(files[1], paving_csv(r.paving.boundary, boundary_component));
+  text(files[2], components_csv(p, r));
+  text(files[3], localization_summary(p, r));
+  write_localization_hdf5(files[4], p, r);
+  written.push_back(files[4]);
+  write_localization_picture(files[5], p, r);
+  written.push_back(files[5]);
   return written;
 }
 

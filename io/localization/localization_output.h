@@ -19,6 +19,8 @@ std::string paving_csv(const Paving& paving, const std::vector<int>& component_o
 /// One line per hypothesis (component).
 std::string components_csv(const LocalizationProblem& problem, const LocalizationResult& result);
 
+/// The files write_localization_outputs() writes into `folder`, in that order.
+std::vector<std::string> localization_output_files(const std::string& folder);
 /// Writes inner.csv, boundary.csv, components.csv, summary.txt, paving.h5, paving.png into
 /// `folder` (created if missing); returns the paths written.
 std::vector<std::string> write_localization_outputs(const std::string& folder, const LocalizationProblem& problem,

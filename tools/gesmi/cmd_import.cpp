@@ -11,6 +11,7 @@
 #include "io/files/mission_file.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/skip_existing.h"
 
 namespace gesmi::cli {
 namespace {
@@ -78,12 +79,14 @@ int import_marks(std::span<const std::string> args) {
       ("into", po::value<std::string>()->required(), "mission file whose mark table is replaced")
       ("mines", po::value<std::string>(), "number of mines K (default: the mission's)")
       ("output,o", po::value<std::string>()->required(), "mission file to write");
+  add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("marks", 1);
   po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi import marks FILE.csv --into MISSION.h5 [--map MAP.yaml] [--mines K] -o OUT.h5"))
+  if (!parse_options(args, options, positional, v, "gesmi import marks FILE.csv --into MISSION.h5 [--map MAP.yaml] [--mines K] -o OUT.h5 [--skip-existing]"))
     return kExitOk;
   const std::string output = v["output"].as<std::string>();
+  if (skipped_as_existing(v, "import", {output})) return kExitOk;
   io::OutputSet outputs(input_files(v, {"marks", "into", "map"}));
   outputs.check(output);
   const std::optional<int> mines = parse_mines(v);
@@ -112,15 +115,18 @@ int import_nav(std::span<const std::string> args) {
       ("truth", po::value<std::string>(), "truth.csv: time,north,east,down (simulated missions)")
       ("truth-mines", po::value<std::string>(), "truth_mines.csv: mine,north,east,down")
       ("output,o", po::value<std::string>()->required(), "mission file to write");
+  add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("nav", 1);
   po::variables_map v;
   if (!parse_options(args, options, positional, v,
                      "gesmi import nav FILE.csv [--map MAP.yaml] [--epoch UTC] [--gps GPS.csv|GPS.nmea [--date YYYY-MM-DD]] "
                      "[--marks MARKS.csv [--marks-map MAP.yaml]] [--origin LAT,LON] "
-                     "[--config bounds.yaml] [--mines K] [--truth truth.csv] [--truth-mines truth_mines.csv] -o OUT.h5"))
+                     "[--config bounds.yaml] [--mines K] [--truth truth.csv] [--truth-mines truth_mines.csv] -o OUT.h5 "
+                     "[--skip-existing]"))
     return kExitOk;
   const std::string output = v["output"].as<std::string>();
+  if (skipped_as_existing(v, "import", {output})) return kExitOk;
   io::OutputSet outputs(input_files(v, {"nav", "map", "gps", "marks", "marks-map", "config", "truth", "truth-mines"}));
   outputs.check(output);
   io::ImportInputs inputs;
@@ -154,16 +160,18 @@ int import_gesmi_txt(std::span<const std::string> args) {
       ("marks", po::value<std::string>(), "marks CSV: time,mine,range,side")
       ("mines", po::value<std::string>(), "number of mines K (default 0)")
       ("output,o", po::value<std::string>()->required(), "mission file to write");
+  add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("log", 1);
   po::variables_map v;
   if (!parse_options(args, options, positional, v,
                      "gesmi import gesmi-txt FILE [--origin LAT,LON] [--config bounds.yaml] [--xy fixes|truth] "
-                     "[--marks MARKS.csv] [--mines K] -o OUT.h5"))
+                     "[--marks MARKS.csv] [--mines K] -o OUT.h5 [--skip-existing]"))
     return kExitOk;
   const std::string xy = v["xy"].as<std::string>();
   if (xy != "fixes" && xy != "truth") throw UsageError("--xy: expected fixes or truth, got " + io::quoted_input(xy));
   const std::string output = v["output"].as<std::string>();
+  if (skipped_as_existing(v, "import", {output})) return kExitOk;
   io::OutputSet outputs(input_files(v, {"log", "marks", "config"}));
   outputs.check(output);
   io::ImportInputs inputs;

@@ -11,6 +11,7 @@
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/progress.h"
+#include "tools/gesmi/skip_existing.h"
 #include "tools/gesmi/json_writer.h"
 
 namespace gesmi::cli {
@@ -30,10 +31,11 @@ int run_kalman(std::span<const std::string> args) {
       ("noise-factor", po::value<std::string>()->default_value("1"), "variance = factor x bound^2 / 3")
       ("iterations", po::value<std::string>()->default_value("2"), "linearisations of the range measurements")
       ("stats", "print one JSON object with timings and the 3-sigma containment");
+  add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("mission", 1);
   po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--stats]"))
+  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--stats] [--skip-existing]"))
     return kExitOk;
   KalmanOptions o;
   o.noise_factor = parse_double("--noise-factor", v["noise-factor"].as<std::string>());
@@ -42,6 +44,7 @@ int run_kalman(std::span<const std::string> args) {
   o.iterations = static_cast<int>(iterations);
   if (const std::string why = o.validate(); !why.empty()) throw UsageError("--noise-factor: " + why);
   const std::string output = v["output"].as<std::string>();
+  if (skipped_as_existing(v, "kalman", {output})) return kExitOk;
   io::OutputSet outputs(input_files(v, {"mission", "config"}));
   outputs.check(output);
 

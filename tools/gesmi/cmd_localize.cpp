@@ -14,6 +14,7 @@
 #include "solver/setinv/measurement_simulator.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/skip_existing.h"
 
 namespace gesmi::cli {
 namespace {
@@ -21,7 +22,7 @@ namespace {
 namespace po = boost::program_options;
 
 constexpr const char* kUsage =
-    "gesmi localize SCENARIO.yaml -o OUT_DIR [--quiet]\n"
+    "gesmi localize SCENARIO.yaml -o OUT_DIR [--quiet] [--skip-existing]\n"
     "       gesmi localize SCENARIO.yaml --simulate [--seed N] [--error-fraction F] [--range-outliers I,J]\n"
     "                      [--bearing-outliers I,J]";
 
@@ -67,6 +68,7 @@ int run_localize(std::span<const std::string> args) {
       ("error-fraction", po::value<std::string>()->default_value("0.9"), "--simulate: errors as a fraction of the bounds")
       ("range-outliers", po::value<std::string>(), "--simulate: range sensor indices given outlier values")
       ("bearing-outliers", po::value<std::string>(), "--simulate: bearing measurement indices given outlier values");
+  add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("scenario", 1);
   po::variables_map values;
@@ -76,6 +78,7 @@ int run_localize(std::span<const std::string> args) {
   if (values.count("simulate")) return simulate(problem, values);
   if (!values.count("output")) throw UsageError(std::string("missing -o OUT_DIR; usage: ") + kUsage);
   const std::string folder = values["output"].as<std::string>();
+  if (skipped_as_existing(values, "localize", io::localization_output_files(folder))) return kExitOk;
   io::OutputSet outputs(input_files(values, {"scenario"}));
   io::OutputSet::check_folder(folder);  // before the search, which can be long
   const LocalizationResult result = localize(problem);

@@ -11,6 +11,7 @@
 #include "solver/sim/simulator.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/skip_existing.h"
 
 namespace gesmi::cli {
 namespace {
@@ -19,7 +20,7 @@ namespace po = boost::program_options;
 
 constexpr const char* kUsage =
     "gesmi simulate --preset redermor --seed S -o MISSION.h5 [--errors uniform|worst-case|at-samples] [--duration T] "
-    "[--rate HZ] [--mines K] [--missed P] [--unassociated P] [--outliers N] [--config bounds.yaml]";
+    "[--rate HZ] [--mines K] [--missed P] [--unassociated P] [--outliers N] [--config bounds.yaml] [--skip-existing]";
 
 int run_simulate(std::span<const std::string> args) {
   po::options_description options("simulate options");
@@ -35,8 +36,10 @@ int run_simulate(std::span<const std::string> args) {
       ("unassociated", po::value<std::string>()->default_value("0"), "probability that a mark has no mine number")
       ("outliers", po::value<std::string>()->default_value("0"), "number of corrupted marks")
       ("config", po::value<std::string>(), "sensor bounds (YAML) the errors are drawn from, stored with the mission");
+  add_skip_existing(options);
   po::variables_map v;
   if (!parse_options(args, options, {}, v, kUsage)) return kExitOk;
+  if (skipped_as_existing(v, "simulate", {v["output"].as<std::string>()})) return kExitOk;
   if (v["preset"].as<std::string>() != "redermor")
     throw UsageError("--preset: unknown preset " + io::quoted_input(v["preset"].as<std::string>()) + " (available: redermor)");
   SimulationOptions o;

@@ -15,6 +15,7 @@
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/progress.h"
+#include "tools/gesmi/skip_existing.h"
 #include "tools/gesmi/solve_arguments.h"
 #include "tools/gesmi/solve_report.h"
 
@@ -26,12 +27,24 @@ using Clock = std::chrono::steady_clock;
 
 double elapsed_ms(Clock::time_point since) { return std::chrono::duration<double, std::milli>(Clock::now() - since).count(); }
 
+// The result and the siblings asked for.
+std::vector<std::string> asked_outputs(const std::string& output, const io::SolveSiblings& asked) {
+  const std::vector<std::string> siblings = io::solve_output_siblings(output);
+  std::vector<std::string> all{output};
+  if (asked.mines_csv) all.push_back(siblings[0]);
+  if (asked.geojson) all.push_back(siblings[1]);
+  if (asked.envelope_png) all.push_back(siblings[2]);
+  return all;
+}
+
 int run_solve(std::span<const std::string> args) {
   po::variables_map v;
   if (!parse_options(args, solve_options(), po::positional_options_description().add("mission", 1), v, kSolveUsage))
     return kExitOk;
   SolveOptions options = parse_solve_options(v);
   const std::string output = v["output"].as<std::string>(), mission_path = v["mission"].as<std::string>();
+  const io::SolveSiblings siblings = parse_solve_siblings(v);
+  if (skipped_as_existing(v, "solve", asked_outputs(output, siblings))) return kExitOk;
   io::OutputSet outputs(input_files(v, {"mission", "config", "from"}));
   outputs.check(output);
   for (const std::string& sibling : io::solve_output_siblings(output)) {
@@ -45,7 +58,6 @@ int run_solve(std::span<const std::string> args) {
   progress.update(-1.0, "reading " + mission_path);
   auto start = Clock::now();
   // The solve never looks at the truth; only the envelope picture draws it.
-  const io::SolveSiblings siblings = parse_solve_siblings(v);
   Mission mission = io::read_mission(mission_path, siblings.envelope_png ? io::TruthReading::read : io::TruthReading::skip);
   if (v.count("config")) io::merge_model_config(mission, v["config"].as<std::string>());
   apply_mine_count(v, mission);

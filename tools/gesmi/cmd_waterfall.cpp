@@ -10,6 +10,7 @@
 #include "solver/network/look_again.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/skip_existing.h"
 
 namespace gesmi::cli {
 namespace {
@@ -21,13 +22,15 @@ int run_waterfall(std::span<const std::string> args) {
   options.add_options()("result", po::value<std::string>()->required(), "result file of gesmi solve")(
       "output,o", po::value<std::string>()->required(), "PNG picture to write")(
       "max-range", po::value<std::string>()->default_value("75"), "range axis length (m)");
+  add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("result", 1);
   po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi waterfall RESULT.h5 -o waterfall.png")) return kExitOk;
+  if (!parse_options(args, options, positional, v, "gesmi waterfall RESULT.h5 -o waterfall.png [--skip-existing]")) return kExitOk;
   const double max_range = parse_non_negative("--max-range", v["max-range"].as<std::string>());
   if (!(max_range > 0.0) || !std::isfinite(max_range)) throw UsageError("--max-range: must be a positive number");
   const std::string output = v["output"].as<std::string>();
+  if (skipped_as_existing(v, "waterfall", {output})) return kExitOk;
   io::OutputSet outputs(input_files(v, {"result"}));
   outputs.check(output);
   const io::SolveResult file = io::read_result(v["result"].as<std::string>(), {.tube = false});

@@ -4,6 +4,7 @@
 
 #include "solver/network/mission_network.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/skip_existing.h"
 
 namespace gesmi::cli {
 
@@ -30,6 +31,7 @@ po::options_description solve_options() {
       ("png", "also draw the envelope and mine boxes: RESULT.envelope.png")
       ("geojson", "also write the mine boxes and envelope as GeoJSON: RESULT.geojson")
       ("mines-csv", "also write the mine boxes as CSV: RESULT.mines.csv");
+  add_skip_existing(options);
   return options;
 }
 

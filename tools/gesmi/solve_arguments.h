@@ -12,7 +12,7 @@ namespace gesmi::cli {
 inline constexpr const char* kSolveUsage =
     "gesmi solve MISSION.h5 -o RESULT.h5 [--config bounds.yaml] [--max-sweeps N] [--tolerance T] [--stats] "
     "[--from RESULT.h5] [--max-outliers Q | --minimal-outliers Q] [--trust-gps] [--mines K] [--png] [--geojson] "
-    "[--mines-csv]";
+    "[--mines-csv] [--skip-existing]";
 
 boost::program_options::options_description solve_options();
 /// SolveOptions from the parsed options; UsageError naming the option when one is bad.
