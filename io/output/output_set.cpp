@@ -59,11 +59,12 @@ void OutputSet::check(const std::string& path) const {
 
 namespace {
 
-// The folder's path without a trailing separator ("out/" and "out" are one folder).
+// The folder's path without trailing separators ("out/" and "out" are one folder; "/"
+// stays). Nothing else is rewritten: "a/.." means what the file system says it means.
 fs::path folder_path(const std::string& folder) {
-  fs::path path = fs::path(folder).lexically_normal();
-  if (!path.has_filename() && path.has_parent_path() && path != path.root_path()) path = path.parent_path();
-  return path;
+  std::string name = folder;
+  while (name.size() > 1 && name.back() == '/') name.pop_back();
+  return fs::path(name);
 }
 
 }  // namespace

@@ -226,7 +226,9 @@ FrameMarginValues margins_within(const Mission& mission, std::size_t n, Reach re
       // (capped also when unbounded there: inf, NaN)
       heading = float_up(h <= zone_heading ? h : zone_heading);
       scale = float_up(s <= zone_scale ? s : zone_scale);
-      if (std::isfinite(distance) && (h > zone_heading || s > zone_scale)) v.beyond_zone = std::max(v.beyond_zone, distance);
+      // (an unbounded box, inf or NaN, cannot show the robot stayed in the zone either)
+      if (!(h <= zone_heading) || !(s <= zone_scale))
+        v.beyond_zone = std::isnan(distance) ? std::numeric_limits<double>::infinity() : std::max(v.beyond_zone, distance);
       last = distance;
     }
     v.heading[k] = heading;

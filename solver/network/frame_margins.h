@@ -56,9 +56,9 @@ inline bool has_frame_margins(const Mission& mission) {
 /// Per-sample margins, owned; empty when the mission has no frame (no geodesy).
 struct FrameMarginValues {
   std::vector<float> heading, scale;
-  /// The farthest finite distance (m) at which the margins exceeded the zone's and were
-  /// capped at them (0: nowhere): there the margins rest on the robot having stayed in
-  /// the frame's zone, which the data did not show.
+  /// The farthest distance (m) at which the margins exceeded the zone's and were capped
+  /// at them (0: nowhere; infinite where a box is unbounded): there the margins rest on
+  /// the robot having stayed in the frame's zone, which the data did not show.
   double beyond_zone = 0.0;
   /// Margins that read these values (which must outlive them).
   FrameMargins view(const Mission& mission) const {

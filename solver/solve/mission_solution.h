@@ -42,8 +42,9 @@ struct SolveReport {
   std::size_t work_items = 0;
   std::optional<std::string> cold_fallback;
   /// The farthest the solved tube reaches from the origin (m) where the frame's margins
-  /// were capped at the zone's: the result there assumes the robot stayed in the zone
-  /// (frame_margins.h); 0 when it never left it or the mission has no frame.
+  /// were capped at the zone's (infinite where it is unbounded, e.g. no fix bounds it):
+  /// the result there assumes the robot stayed in the zone (frame_margins.h); 0 when
+  /// the tube stays within it or the mission has no frame.
   double beyond_frame_zone = 0.0;
 };
 

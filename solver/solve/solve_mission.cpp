@@ -194,6 +194,7 @@ void solve_warm(const Mission& mission, const SolveInputs& in, const SolveOption
   }
   if (!warm) {
     s.report.cold_fallback = why;
+    s.report.beyond_frame_zone = 0.0;  // (the cold solve finds its own)
     solve_cold(mission, in, options, s, net);
     return;
   }

@@ -51,6 +51,7 @@ def test_the_man_page_describes_every_command(prefix):
         assert f".SS gesmi {command}" in page, command
     for sub in ("marks add", "import nav", "example paper2d"):
         assert f".SS gesmi {sub}" in page, sub
+    assert "\\-\\-skip\\-existing" in page  # options as hyphens, not typographic dashes
 
 
 def complete(prefix, *words):

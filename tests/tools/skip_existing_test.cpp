@@ -46,12 +46,37 @@ TEST(SkipExisting, EveryWritingCommandSkipsWhenItsOutputsExist) {
   expect_skipped({"kalman", mission, "-o", d + "/k.h5"}, {d + "/k.h5"});
   expect_skipped({"waterfall", result, "-o", d + "/w.png"}, {d + "/w.png"});
   expect_skipped({"import", "marks", d + "/marks.csv", "--into", mission, "-o", d + "/i.h5"}, {d + "/i.h5"});
+  put(d + "/nav.csv", "time,roll,pitch,heading,vx,vy,vz,altitude,depth\n0,0,0,0,1,0,0,5,10\n0.1,0,0,0,1,0,0,5,10\n");
+  expect_skipped({"import", "nav", d + "/nav.csv", "--origin", "48.2,-4.4", "-o", d + "/n.h5"}, {d + "/n.h5"});
+  put(d + "/log.txt", "0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n");
+  expect_skipped({"import", "gesmi-txt", d + "/log.txt", "-o", d + "/g.h5"}, {d + "/g.h5"});
   fs::create_directories(d + "/loc");
   std::vector<std::string> files;
   for (const char* f : {"inner.csv", "boundary.csv", "components.csv", "summary.txt", "paving.h5", "paving.png"})
     files.push_back(d + "/loc/" + f);
   expect_skipped({"localize", source_dir() + "/missions/localization/triangle_two_hypotheses.yaml", "-o", d + "/loc"},
                  files);
+}
+
+TEST(SkipExisting, WhatWouldBeAnErrorStaysOne) {
+  // The outputs and options are checked before the skip: an output that is an input, a
+  // folder, or a bad option still exits 2 with one line.
+  const std::string d = temp_folder("skip-existing");
+  ASSERT_EQ(run_gesmi({"simulate", "--seed", "3", "--duration", "60", "-o", d + "/m.h5"}).exit_code, 0);
+  put(d + "/marks.csv", "time,mine,range,side\n10,0,20,starboard\n");
+  fs::create_directories(d + "/folder");
+  const std::vector<std::vector<std::string>> cases = {
+      {"import", "marks", d + "/marks.csv", "--into", d + "/m.h5", "-o", d + "/m.h5"},
+      {"solve", d + "/m.h5", "-o", d + "/m.h5"},
+      {"solve", d + "/m.h5", "-o", d + "/folder"},
+      {"simulate", "--seed", "3", "--preset", "bogus", "-o", d + "/m.h5"}};
+  for (std::vector<std::string> args : cases) {
+    args.push_back("--skip-existing");
+    const CommandResult r = run_gesmi(args);
+    EXPECT_EQ(r.exit_code, 2) << args[0] << " " << args[1] << ": " << r.out;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_EQ(r.out.find("skipped"), std::string::npos) << r.out;
+  }
 }
 
 TEST(SkipExisting, AMissingOutputIsWritten) {

@@ -86,10 +86,10 @@ int import_marks(std::span<const std::string> args) {
   if (!parse_options(args, options, positional, v, "gesmi import marks FILE.csv --into MISSION.h5 [--map MAP.yaml] [--mines K] -o OUT.h5 [--skip-existing]"))
     return kExitOk;
   const std::string output = v["output"].as<std::string>();
-  if (skipped_as_existing(v, "import", {output})) return kExitOk;
   io::OutputSet outputs(input_files(v, {"marks", "into", "map"}));
   outputs.check(output);
   const std::optional<int> mines = parse_mines(v);
+  if (skipped_as_existing(v, "import", {output})) return kExitOk;
   Mission m = io::read_mission(v["into"].as<std::string>());
   io::import_marks(m, v["marks"].as<std::string>(), mines, optional_path(v, "map"));
   io::write_mission(m, output);
@@ -126,7 +126,6 @@ int import_nav(std::span<const std::string> args) {
                      "[--skip-existing]"))
     return kExitOk;
   const std::string output = v["output"].as<std::string>();
-  if (skipped_as_existing(v, "import", {output})) return kExitOk;
   io::OutputSet outputs(input_files(v, {"nav", "map", "gps", "marks", "marks-map", "config", "truth", "truth-mines"}));
   outputs.check(output);
   io::ImportInputs inputs;
@@ -142,6 +141,7 @@ int import_nav(std::span<const std::string> args) {
   inputs.truth_mines = optional_path(v, "truth-mines");
   if (v.count("origin")) inputs.origin = parse_origin(v["origin"].as<std::string>());
   inputs.mines = parse_mines(v);
+  if (skipped_as_existing(v, "import", {output})) return kExitOk;
   std::vector<std::string> notes;
   const Mission m = io::import_nav(v["nav"].as<std::string>(), inputs, &notes);
   io::write_mission(m, output);
@@ -171,7 +171,6 @@ int import_gesmi_txt(std::span<const std::string> args) {
   const std::string xy = v["xy"].as<std::string>();
   if (xy != "fixes" && xy != "truth") throw UsageError("--xy: expected fixes or truth, got " + io::quoted_input(xy));
   const std::string output = v["output"].as<std::string>();
-  if (skipped_as_existing(v, "import", {output})) return kExitOk;
   io::OutputSet outputs(input_files(v, {"log", "marks", "config"}));
   outputs.check(output);
   io::ImportInputs inputs;
@@ -179,6 +178,7 @@ int import_gesmi_txt(std::span<const std::string> args) {
   inputs.config = optional_path(v, "config");
   if (v.count("origin")) inputs.origin = parse_origin(v["origin"].as<std::string>());
   inputs.mines = parse_mines(v);
+  if (skipped_as_existing(v, "import", {output})) return kExitOk;
   const Mission m = io::import_gesmi_txt(v["log"].as<std::string>(), xy == "fixes" ? io::GesmiXy::fixes : io::GesmiXy::truth, inputs);
   io::write_mission(m, output);
   outputs.commit();

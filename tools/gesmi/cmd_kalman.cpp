@@ -44,9 +44,9 @@ int run_kalman(std::span<const std::string> args) {
   o.iterations = static_cast<int>(iterations);
   if (const std::string why = o.validate(); !why.empty()) throw UsageError("--noise-factor: " + why);
   const std::string output = v["output"].as<std::string>();
-  if (skipped_as_existing(v, "kalman", {output})) return kExitOk;
   io::OutputSet outputs(input_files(v, {"mission", "config"}));
   outputs.check(output);
+  if (skipped_as_existing(v, "kalman", {output})) return kExitOk;
 
   io::KalmanFile file;
   Progress progress("gesmi kalman:");  // on a terminal, for long runs only (progress.h)

@@ -78,9 +78,9 @@ int run_localize(std::span<const std::string> args) {
   if (values.count("simulate")) return simulate(problem, values);
   if (!values.count("output")) throw UsageError(std::string("missing -o OUT_DIR; usage: ") + kUsage);
   const std::string folder = values["output"].as<std::string>();
-  if (skipped_as_existing(values, "localize", io::localization_output_files(folder))) return kExitOk;
   io::OutputSet outputs(input_files(values, {"scenario"}));
   io::OutputSet::check_folder(folder);  // before the search, which can be long
+  if (skipped_as_existing(values, "localize", io::localization_output_files(folder))) return kExitOk;
   const LocalizationResult result = localize(problem);
   outputs.prepare_folder(folder);
   io::write_localization_outputs(folder, problem, result);

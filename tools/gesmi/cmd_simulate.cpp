@@ -39,7 +39,6 @@ int run_simulate(std::span<const std::string> args) {
   add_skip_existing(options);
   po::variables_map v;
   if (!parse_options(args, options, {}, v, kUsage)) return kExitOk;
-  if (skipped_as_existing(v, "simulate", {v["output"].as<std::string>()})) return kExitOk;
   if (v["preset"].as<std::string>() != "redermor")
     throw UsageError("--preset: unknown preset " + io::quoted_input(v["preset"].as<std::string>()) + " (available: redermor)");
   SimulationOptions o;
@@ -60,6 +59,7 @@ int run_simulate(std::span<const std::string> args) {
   const std::string output = v["output"].as<std::string>();
   io::OutputSet outputs(input_files(v, {"config"}));
   outputs.check(output);
+  if (skipped_as_existing(v, "simulate", {output})) return kExitOk;
 
   SensorModel model;
   if (v.count("config")) io::merge_sensor_model_yaml(v["config"].as<std::string>(), model);

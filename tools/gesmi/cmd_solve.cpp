@@ -44,13 +44,13 @@ int run_solve(std::span<const std::string> args) {
   SolveOptions options = parse_solve_options(v);
   const std::string output = v["output"].as<std::string>(), mission_path = v["mission"].as<std::string>();
   const io::SolveSiblings siblings = parse_solve_siblings(v);
-  if (skipped_as_existing(v, "solve", asked_outputs(output, siblings))) return kExitOk;
   io::OutputSet outputs(input_files(v, {"mission", "config", "from"}));
   outputs.check(output);
   for (const std::string& sibling : io::solve_output_siblings(output)) {
     outputs.check(sibling);
     outputs.owns(sibling);
   }
+  if (skipped_as_existing(v, "solve", asked_outputs(output, siblings))) return kExitOk;
 
   std::map<std::string, double> timings;
   // One progress line over the whole command, on a terminal only (progress.h).

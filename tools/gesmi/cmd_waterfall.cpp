@@ -30,9 +30,9 @@ int run_waterfall(std::span<const std::string> args) {
   const double max_range = parse_non_negative("--max-range", v["max-range"].as<std::string>());
   if (!(max_range > 0.0) || !std::isfinite(max_range)) throw UsageError("--max-range: must be a positive number");
   const std::string output = v["output"].as<std::string>();
-  if (skipped_as_existing(v, "waterfall", {output})) return kExitOk;
   io::OutputSet outputs(input_files(v, {"result"}));
   outputs.check(output);
+  if (skipped_as_existing(v, "waterfall", {output})) return kExitOk;
   const io::SolveResult file = io::read_result(v["result"].as<std::string>(), {.tube = false});
   const MissionSolution& r = file.solution;
   io::WaterfallPicture picture;

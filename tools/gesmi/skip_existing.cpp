@@ -14,7 +14,7 @@ bool skipped_as_existing(const boost::program_options::variables_map& values, st
   if (!values.count("skip-existing") || outputs.empty()) return false;
   std::error_code ec;
   for (const std::string& path : outputs)
-    if (!std::filesystem::exists(path, ec)) return false;
+    if (!std::filesystem::is_regular_file(path, ec)) return false;
   std::string names;
   for (const std::string& path : outputs) names += (names.empty() ? "" : ", ") + path;
   std::printf("gesmi %.*s: %s already written; skipped (--skip-existing)\n", static_cast<int>(command.size()),

@@ -16,7 +16,9 @@ namespace gesmi::cli {
 void add_skip_existing(boost::program_options::options_description& options);
 
 /// True, after saying so on stdout, when --skip-existing was given and every one of
-/// `outputs` exists: the command then stops with exit code 0 and writes nothing.
+/// `outputs` is an existing file: the command then stops with exit code 0 and writes
+/// nothing. Called once the options are parsed and the outputs checked, so that what
+/// would be an error (exit 2) stays one.
 bool skipped_as_existing(const boost::program_options::variables_map& values, std::string_view command,
                          const std::vector<std::string>& outputs);
 

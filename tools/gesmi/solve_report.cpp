@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdio>
+#include <limits>
 #include <numeric>
 
 #include "solver/network/inconsistency_text.h"
@@ -13,7 +14,11 @@ namespace gesmi::cli {
 void print_solve_notes(const MissionSolution& s) {
   const SolveReport& r = s.report;
   if (r.cold_fallback) std::fprintf(stderr, "gesmi solve: %s; solving cold\n", r.cold_fallback->c_str());
-  if (r.beyond_frame_zone > 0.0)
+  if (r.beyond_frame_zone == std::numeric_limits<double>::infinity())
+    std::fprintf(stderr,
+                 "gesmi solve: warning: the tube is unbounded in places (no fix bounds it), so it cannot show that the "
+                 "robot stayed within the local frame's zone; the frame's bounds there assume it did\n");
+  else if (r.beyond_frame_zone > 0.0)
     std::fprintf(stderr,
                  "gesmi solve: warning: the tube reaches %.0f m from the origin, beyond the local frame's zone; the frame's "
                  "bounds there assume the robot stayed within it: import the log again with an origin nearer the mission "

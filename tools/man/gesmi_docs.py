@@ -62,7 +62,13 @@ def options(text):
 
 
 def roff(text):
-    return "\n".join(("\\&" + line if line.startswith((".", "'")) else line).replace("\\", "\\\\") for line in text.splitlines())
+    """Help text as literal roff lines: backslashes doubled, hyphens kept as hyphens, and
+    a line starting with a control character protected."""
+    lines = []
+    for line in text.splitlines():
+        line = line.replace("\\", "\\\\").replace("-", "\\-")
+        lines.append("\\&" + line if line.startswith((".", "'")) else line)
+    return "\n".join(lines)
 
 
 def write_man(gesmi, output):
@@ -111,7 +117,7 @@ _gesmi() {{
   elif [[ $cur == -* ]]; then
     COMPREPLY=($(compgen -W "$opts" -- "$cur"))
   else
-    COMPREPLY=($(compgen -f -- "$cur"))
+    mapfile -t COMPREPLY < <(compgen -f -- "$cur")
   fi
 }}
 complete -o filenames -F _gesmi gesmi

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "solver/mission/frame_scale.h"
 #include "solver/mission/meridian_convergence.h"
@@ -65,7 +66,9 @@ TEST(FrameZoneReport, MarginsOverATubeNameTheFarthestCappedDistance) {
   const FrameMarginValues v = frame_margins_over(m, tube, 1.0);
   EXPECT_GT(v.beyond_zone, 1501.0);  // 1501 m plus half a step at 1 m/s, rounded up
   EXPECT_LT(v.beyond_zone, 1505.0);
-  tube.px[2] = Interval::entire();  // unbounded: the zone's margins, but no distance to report
+  tube.px[2] = Interval::entire();  // unbounded: nothing shows the robot stayed in the zone
+  EXPECT_EQ(frame_margins_over(m, tube, 1.0).beyond_zone, std::numeric_limits<double>::infinity());
+  tube.px[2] = Interval::around(500.0, 1.0);  // all within
   EXPECT_EQ(frame_margins_over(m, tube, 1.0).beyond_zone, 0.0);
 }
 
