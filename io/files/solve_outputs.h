@@ -19,6 +19,10 @@ struct SolveSiblings {
   bool mines_csv = false, geojson = false, envelope_png = false;
 };
 
+/// The result and the siblings asked for, in the order write_solve_outputs() writes
+/// them.
+std::vector<std::string> asked_solve_outputs(const std::string& result_path, const SolveSiblings& asked);
+
 /// Writes the result and the asked siblings (each atomically; inside an OutputSet, as
 /// one set); `mission_name` titles the picture. Returns the paths written, the result
 /// first.

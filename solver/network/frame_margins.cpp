@@ -202,6 +202,11 @@ namespace {
 // squares that underflow by the smallest normal number under the root.
 constexpr double kUp = 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
 
+// The larger of two distances, NaN when either is (std::max would drop a NaN).
+double farther(double a, double b) {
+  return std::isnan(a) || std::isnan(b) ? std::numeric_limits<double>::quiet_NaN() : std::max(a, b);
+}
+
 // The margins of each sample from `reach` (the farthest the robot can be from the
 // origin at each sample's time): over each step, within the farther of its ends plus
 // half the step's travel (the robot is never farther than that from one of them);
@@ -243,11 +248,9 @@ FrameMarginValues margins_within(const Mission& mission, std::size_t n, Reach re
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const double next = reach(k + 1);
     const double half_travel = speed * (0.5 * (mission.time[k + 1] - mission.time[k]));
-    const double after = (std::max(here, next) + half_travel) * kUp;
-    take(k, std::isnan(before) || std::isnan(after) || std::isnan(here) || std::isnan(next)
-                ? std::numeric_limits<double>::quiet_NaN()
-                : std::max(before, after));
-    before = std::isnan(here) || std::isnan(next) ? std::numeric_limits<double>::quiet_NaN() : after;
+    const double after = (farther(here, next) + half_travel) * kUp;
+    take(k, farther(before, after));
+    before = after;
     here = next;
   }
   if (n > 1) take(n - 1, before);

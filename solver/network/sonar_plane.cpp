@@ -27,8 +27,9 @@ Vec3I SonarPlane::body_prior(SonarSide on) const {
 }
 
 Vec3I SonarPlane::rough_body_offset(const Vec3I& q, const Vec3I& m) const {
-  const Interval ez = intersect((q[2] - m[2]).inflated(frame_slack), vertical());
-  const Interval ex = (q[0] - m[0]).inflated(frame_slack), ey = (q[1] - m[1]).inflated(frame_slack);
+  const Vec3I e = offset(q, m);
+  const Interval ez = intersect(e[2], vertical());
+  const Interval &ex = e[0], &ey = e[1];
   // world_to_body (euler.h) term by term, the along-track component first: most mines in
   // reach are ahead or behind, out of the plane, and need no more.
   const Attitude<Interval>& a = attitude;
@@ -48,9 +49,14 @@ bool SonarPlane::may_hold(const Vec3I& rough_body_offset, SonarSide on) const {
   return true;
 }
 
+Vec3I SonarPlane::offset(const Vec3I& q, const Vec3I& m) const {
+  return Vec3I((q[0] - m[0]).inflated(frame_slack), (q[1] - m[1]).inflated(frame_slack),
+               (q[2] - m[2]).inflated(frame_slack));
+}
+
 Interval SonarPlane::possible_ranges(const Vec3I& q, const Vec3I& m) const {
-  return sqrt(sqr((q[0] - m[0]).inflated(frame_slack)) + sqr((q[1] - m[1]).inflated(frame_slack)) +
-              sqr((q[2] - m[2]).inflated(frame_slack)));
+  const Vec3I e = offset(q, m);
+  return sqrt(sqr(e[0]) + sqr(e[1]) + sqr(e[2]));
 }
 
 Interval SonarPlane::vertical() const { return -(altitude + Interval(-depth_band, depth_band)); }
@@ -81,7 +87,7 @@ bool SonarPlane::contract(Vec3I& q, Vec3I& m, Interval& r) const {
   // learnt. Stop early when nothing moves by more than a micrometre.
   for (int round = 0; ok && round < 4; ++round) {
     const Vec3I q_before = q, m_before = m;
-    Vec3I e((q[0] - m[0]).inflated(frame_slack), (q[1] - m[1]).inflated(frame_slack), (q[2] - m[2]).inflated(frame_slack));
+    Vec3I e = offset(q, m);
     ok = e[2].intersect_with(vertical);
     ok = ok && contract_distance<3>(r, {&e[0], &e[1], &e[2]}, {&zero_x, &zero_y, &zero_z});
     Vec3I eb = world_to_body(attitude, e);

@@ -45,6 +45,8 @@ struct SonarPlane {
   bool may_hold(const Vec3I& rough_body_offset, SonarSide side) const;
   /// The box of e.z = p_z - m_z: -(altitude ± depth band).
   Interval vertical() const;
+  /// The offsets e that boxes q and m allow: q - m widened by the frame slack.
+  Vec3I offset(const Vec3I& q, const Vec3I& m) const;
   /// The slant ranges |e| that boxes q and m allow, the frame slack included.
   Interval possible_ranges(const Vec3I& q, const Vec3I& m) const;
 };

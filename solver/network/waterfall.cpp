@@ -106,7 +106,6 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
     // This step's cells by mine (empty: none), appended in mine order.
     std::vector<Interval> row(mines);
     std::size_t earlier = any_kept ? before->waterfall.first_cell_at(first) : 0;
-    double slack_scale = std::numeric_limits<double>::quiet_NaN(), slack = 0.0;
     for (std::size_t k = first; k < last; ++k) {
       // The first chunk runs on the calling thread: it reports for all (they keep pace).
       if (chunk == 0 && on_progress && (k - first) % 8192 == 0) on_progress(static_cast<double>(k - first) / static_cast<double>(last - first));
@@ -114,11 +113,7 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
       const bool kept_step = any_kept && same_positions(domains, before->domains, k);
       std::fill(row.begin(), row.end(), Interval::empty());
       near.clear();
-      // (consecutive steps mostly share their scale margin: its slack is kept)
-      if (const double scale = boxes.frame_scale(k); !(scale == slack_scale)) {
-        slack = sonar_frame_slack(scale, model.sonar_max_range);
-        slack_scale = scale;
-      }
+      const double slack = sonar_frame_slack(boxes.frame_scale(k), model.sonar_max_range);
       // The slack moves each axis of the offset, so the distance by at most sqrt(3) < 2 times it.
       const double reach = add_up(model.sonar_max_range, 2.0 * slack);
       for (std::size_t i = 0; i < mines; ++i)

@@ -27,16 +27,6 @@ using Clock = std::chrono::steady_clock;
 
 double elapsed_ms(Clock::time_point since) { return std::chrono::duration<double, std::milli>(Clock::now() - since).count(); }
 
-// The result and the siblings asked for.
-std::vector<std::string> asked_outputs(const std::string& output, const io::SolveSiblings& asked) {
-  const std::vector<std::string> siblings = io::solve_output_siblings(output);
-  std::vector<std::string> all{output};
-  if (asked.mines_csv) all.push_back(siblings[0]);
-  if (asked.geojson) all.push_back(siblings[1]);
-  if (asked.envelope_png) all.push_back(siblings[2]);
-  return all;
-}
-
 int run_solve(std::span<const std::string> args) {
   po::variables_map v;
   if (!parse_options(args, solve_options(), po::positional_options_description().add("mission", 1), v, kSolveUsage))
@@ -50,7 +40,7 @@ int run_solve(std::span<const std::string> args) {
     outputs.check(sibling);
     outputs.owns(sibling);
   }
-  if (skipped_as_existing(v, "solve", asked_outputs(output, siblings))) return kExitOk;
+  if (skipped_as_existing(v, "solve", io::asked_solve_outputs(output, siblings))) return kExitOk;
 
   std::map<std::string, double> timings;
   // One progress line over the whole command, on a terminal only (progress.h).
