@@ -22,17 +22,17 @@ std::string fix_beyond_zone(double distance) {
          " km zone of the local frame: import the log again with an origin nearer the mission (--origin LAT,LON)";
 }
 
-LocalFrame::LocalFrame(const GeoOrigin& origin) : origin_(origin) {}
+LocalFrame::LocalFrame(const GeoOrigin& origin) : origin_(origin), plane_(origin.latitude, origin.longitude, 0.0) {}
 
 NorthEast LocalFrame::to_local(double latitude, double longitude) const {
-  const GeographicLib::LocalCartesian frame(origin_.latitude, origin_.longitude, 0.0);
+  const GeographicLib::LocalCartesian& frame = plane_;
   double east = 0, north = 0, up = 0;
   frame.Forward(latitude, longitude, 0.0, east, north, up);
   return {north, east};
 }
 
 GeoOrigin LocalFrame::to_geodetic(double north, double east) const {
-  const GeographicLib::LocalCartesian frame(origin_.latitude, origin_.longitude, 0.0);
+  const GeographicLib::LocalCartesian& frame = plane_;
   // The inverse of to_local: the sea-surface point whose projection on the tangent
   // plane is (north, east). That point lies below the plane by about d^2 / 2R, and
   // taking the surface point under (north, east, 0) along its own normal instead

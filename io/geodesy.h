@@ -18,6 +18,7 @@
 // convergence (true north turning against the frame's north) is returned separately
 // for the heading bound.
 
+#include <GeographicLib/LocalCartesian.hpp>
 #include <string>
 
 #include "solver/mission/mission.h"
@@ -42,9 +43,11 @@ class LocalFrame {
   NorthEast to_local(double latitude, double longitude) const;
   /// The sea-surface point whose projection is (north, east): to_local's inverse.
   GeoOrigin to_geodetic(double north, double east) const;
+  const GeoOrigin& origin() const { return origin_; }
 
  private:
   GeoOrigin origin_;
+  GeographicLib::LocalCartesian plane_;  // built once: exports convert every tube corner
 };
 
 /// Sets the fixes' longitude and latitude from gps_north/east (simulated missions,

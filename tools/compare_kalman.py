@@ -7,7 +7,8 @@ Writes into REPORT_DIR: track.png (the interval envelope against the 3-sigma cor
 along the track), mines.png (mine boxes against 3-sigma ellipses), widths.png (widths
 over time) and report.md (a table per trajectory and mine: interval width, 3-sigma
 width, whether the truth is inside each, and the run times). Exit code 2 with one line
-on bad input.
+on bad input; 3 with one line for an inconsistent interval result (its boxes are no
+answer) unless --show-inconsistent, which marks the report and pictures INCONSISTENT.
 """
 import argparse
 import os
@@ -49,6 +50,8 @@ def main():
     parser.add_argument("result")
     parser.add_argument("kalman")
     parser.add_argument("-o", "--output", required=True)
+    parser.add_argument("--show-inconsistent", action="store_true",
+                        help="compare with an inconsistent interval result anyway (marked INCONSISTENT)")
     args = parser.parse_args()
 
     mission = read(args.mission, ["/truth/position", "/truth/mines", "/nav/time"])
@@ -59,6 +62,12 @@ def main():
     for path, data, key in [(args.result, result, "/tube/lower"), (args.kalman, kalman, "/kalman/mean")]:
         if data[key] is None:
             fail(f"{path}: missing {key}: not a gesmi result / kalman file")
+    if result["@status"] != "consistent" and not args.show_inconsistent:
+        print(f"compare_kalman: {args.result} is an inconsistent result (the data contradict the bounds, so its boxes "
+              "are no answer): see its diagnosis with gesmi solve, or add --show-inconsistent to compare anyway",
+              file=sys.stderr)
+        sys.exit(3)
+    marker = "" if result["@status"] == "consistent" else " (INCONSISTENT interval result: no answer)"
     t = result["/time"]
     if kalman["/time"].shape != t.shape or np.any(kalman["/time"] != t):
         fail(f"{args.kalman}: /time differs from {args.result}: not the same mission")
@@ -85,7 +94,8 @@ def main():
         ax.set_ylabel(f"{name} - {'truth' if has_truth else 'mean'} (m)")
         ax.legend(loc="upper right", fontsize=8)
     axes[1].set_xlabel("time (h)")
-    fig.suptitle("Interval envelope and Kalman 3σ corridor, relative to the " + ("truth" if has_truth else "Kalman mean"))
+    fig.suptitle("Interval envelope and Kalman 3σ corridor, relative to the " + ("truth" if has_truth else "Kalman mean")
+                 + marker)
     fig.tight_layout()
     fig.savefig(os.path.join(args.output, "track.png"), dpi=110)
     plt.close(fig)
@@ -119,6 +129,8 @@ def main():
         ax.legend(fontsize=7)
     for j in range(k, rows * columns):
         axes[j // columns][j % columns].axis("off")
+    if marker:
+        fig.suptitle("Mine boxes and Kalman 3σ ellipses" + marker)
     fig.tight_layout()
     fig.savefig(os.path.join(args.output, "mines.png"), dpi=110)
     plt.close(fig)
@@ -132,6 +144,8 @@ def main():
     ax.set_ylabel("width (m)")
     ax.set_yscale("log")
     ax.legend(fontsize=8)
+    if marker:
+        ax.set_title("Widths over time" + marker)
     fig.tight_layout()
     fig.savefig(os.path.join(args.output, "widths.png"), dpi=110)
     plt.close(fig)
@@ -143,7 +157,7 @@ def main():
     def inside_sigma(values, m, s):
         return bool(np.all(np.abs(values - m) <= 3 * s))
 
-    lines = ["# gesmi interval result against the Kalman smoother", "",
+    lines = ["# gesmi interval result against the Kalman smoother" + marker, "",
              f"- mission: `{args.mission}`; interval status: {result['@status']}",
              f"- run time: interval propagation {result['@timing_propagate_ms']:.1f} ms "
              f"(+ {result['@timing_build_ms']:.1f} ms to build the network); Kalman smoother "

@@ -1,82 +1,184 @@
 #include "io/exports/result_exports.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <string>
+#include <cmath>
+#include <nlohmann/json.hpp>
 
+#include "io/exports/export_csv.h"
 #include "io/output/atomic_output.h"
-#include "io/geodesy.h"
+#include "io/exports/geodetic_box.h"
+#include "io/format_error.h"
+#include "io/imports/csv_number.h"
+#include "io/io_version.h"
 #include "io/time/utc_time.h"
+#include "solver/tube/box_union_outline.h"
 
 namespace gesmi::io {
 namespace {
 
-std::string number(double x, int digits) {
-  char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%.*f", digits, x);
-  return buffer;
+using nlohmann::json;
+
+// Geodetic bounds of a local box: outward when bounded, the whole globe when
+// unbounded, NaN when empty (an inconsistent result).
+GeodeticBox geodetic_bounds(const LocalFrame& frame, const Interval& north, const Interval& east) {
+  if (north.is_empty() || east.is_empty()) return {NAN, NAN, NAN, NAN};
+  if (!north.is_bounded() || !east.is_bounded()) return {-90.0, 90.0, -180.0, 180.0};
+  return geodetic_box(frame, north, east);
 }
 
-// A closed ring of the box's four corners in [longitude, latitude].
-std::string ring(const LocalFrame& frame, const Interval& north, const Interval& east) {
-  const double corners[5][2] = {{north.lo(), east.lo()}, {north.lo(), east.hi()}, {north.hi(), east.hi()},
-                                {north.hi(), east.lo()}, {north.lo(), east.lo()}};
-  std::string out = "[[";
-  for (int i = 0; i < 5; ++i) {
-    const GeoOrigin g = frame.to_geodetic(corners[i][0], corners[i][1]);
-    out += (i ? ", [" : "[") + number(g.longitude, 9) + ", " + number(g.latitude, 9) + "]";
+void append_bounds(std::string& row, const Interval& x) {
+  row += ',';
+  append_number(row, x.is_empty() ? NAN : x.lo());
+  row += ',';
+  append_number(row, x.is_empty() ? NAN : x.hi());
+}
+
+void append_geodetic(std::string& row, const GeodeticBox& g) {
+  for (const double v : {g.latitude_lo, g.latitude_hi, g.longitude_lo, g.longitude_hi}) {
+    row += ',';
+    append_number(row, v);
   }
-  return out + "]]";
+}
+
+// A closed ring in [longitude, latitude]: every local edge cut into pieces of at most
+// kGeodeticPiece metres (the pad the local outline was widened by covers the chords).
+json geodetic_ring(const LocalFrame& frame, const OutlineRing& ring) {
+  json out = json::array();
+  for (std::size_t i = 0; i + 1 < ring.size(); ++i) {
+    const OutlinePoint& a = ring[i];
+    const OutlinePoint& b = ring[i + 1];
+    const int pieces = static_cast<int>(std::max(1.0, std::ceil(std::hypot(b[0] - a[0], b[1] - a[1]) / kGeodeticPiece)));
+    for (int p = 0; p < pieces; ++p) {
+      const double f = static_cast<double>(p) / pieces;
+      const GeoOrigin g = geodetic_point(frame, a[1] + f * (b[1] - a[1]), a[0] + f * (b[0] - a[0]));  // x east, y north
+      out.push_back({g.longitude, g.latitude});
+    }
+  }
+  out.push_back(out.front());
+  return out;
+}
+
+json geodetic_polygon(const LocalFrame& frame, const OutlinePolygon& polygon) {
+  json rings = json::array({geodetic_ring(frame, polygon.exterior)});
+  for (const OutlineRing& hole : polygon.holes) rings.push_back(geodetic_ring(frame, hole));
+  return rings;
+}
+
+// The counter-clockwise ring of a geodetic box.
+json box_ring(const GeodeticBox& g) {
+  return json::array({json::array({json::array({g.longitude_lo, g.latitude_lo}), json::array({g.longitude_hi, g.latitude_lo}),
+                                   json::array({g.longitude_hi, g.latitude_hi}), json::array({g.longitude_lo, g.latitude_hi}),
+                                   json::array({g.longitude_lo, g.latitude_lo})})});
+}
+
+json feature(json properties, json geometry) {
+  return {{"type", "Feature"}, {"properties", std::move(properties)}, {"geometry", std::move(geometry)}};
 }
 
 }  // namespace
 
-void write_mines_csv(const TubeDomains& d, const std::string& path) {
-  std::string text = "mine,north_lo,north_hi,east_lo,east_hi,down_lo,down_hi\n";
-  for (std::size_t i = 0; i < d.mines.size(); ++i) {
-    text += std::to_string(i);
-    for (int c = 0; c < 3; ++c) {
-      const Interval& x = d.mines[i][c];
-      text += "," + (x.is_empty() ? std::string("nan") : number(x.lo(), 3)) + "," +
-              (x.is_empty() ? std::string("nan") : number(x.hi(), 3));
-    }
-    text += "\n";
+GeoOrigin export_origin(const SolveResult& r, const std::string& path) {
+  if (!r.origin)
+    throw FormatError(path + ": the result records no origin (written before gesmi 0.6): solve the mission again to "
+                             "export it in latitude/longitude");
+  if (!(std::abs(r.origin->latitude) <= kGeodeticExportLatitude))
+    throw FormatError(path + ": the origin's latitude " + format_number(r.origin->latitude) + " is beyond +-" +
+                      format_number(kGeodeticExportLatitude) + " degrees, where geodetic exports are not supported");
+  return *r.origin;
+}
+
+const char* status_name(const MissionSolution& s) { return s.report.consistent ? "consistent" : "inconsistent"; }
+
+int marks_of_mine(const MissionSolution& s, int mine) {
+  int count = 0;
+  for (std::size_t j = 0; j < s.candidates.size(); ++j)
+    if (s.candidates[j] == std::uint64_t{1} << mine && !(j < s.mark_outlier.size() && s.mark_outlier[j])) ++count;
+  return count;
+}
+
+void write_mines_csv(const SolveResult& r, const std::string& path) {
+  const LocalFrame frame(export_origin(r, path));
+  const MissionSolution& s = r.solution;
+  std::string text =
+      "mine,marks,north_lo,north_hi,east_lo,east_hi,down_lo,down_hi,latitude_lo,latitude_hi,longitude_lo,longitude_hi,"
+      "status\n";
+  for (std::size_t i = 0; i < s.domains.mines.size(); ++i) {
+    const Vec3I& m = s.domains.mines[i];
+    text += std::to_string(i) + "," + std::to_string(marks_of_mine(s, static_cast<int>(i)));
+    for (int c = 0; c < 3; ++c) append_bounds(text, m[c]);
+    append_geodetic(text, geodetic_bounds(frame, m[0], m[1]));
+    text += std::string(",") + status_name(s) + "\n";
   }
   write_text_file(path, text);
 }
 
-void write_geojson(const TubeDomains& d, const GeoOrigin& origin, std::optional<std::int64_t> epoch, const std::string& path,
-                   std::size_t polygons) {
+void write_tube_csv(const SolveResult& r, const std::string& path) {
+  const LocalFrame frame(export_origin(r, path));
+  const MissionSolution& s = r.solution;
+  const TubeDomains& d = s.domains;
+  if (d.size() != s.time.size()) throw FormatError(path + ": the result was read without its tube");
+  write_text_file(path, [&](std::ostream& out) {
+    out << "time" << (r.epoch ? ",utc" : "")
+        << ",north_lo,north_hi,east_lo,east_hi,down_lo,down_hi,latitude_lo,latitude_hi,longitude_lo,longitude_hi,status\n";
+    std::string row;
+    for (std::size_t k = 0; k < d.size(); ++k) {
+      row.clear();
+      append_number(row, s.time[k]);
+      if (r.epoch) row += "," + format_iso8601_micro(*r.epoch, s.time[k]);
+      append_bounds(row, d.px[k]);
+      append_bounds(row, d.py[k]);
+      append_bounds(row, d.pz[k]);
+      append_geodetic(row, geodetic_bounds(frame, d.px[k], d.py[k]));
+      row += std::string(",") + status_name(s) + "\n";
+      out.write(row.data(), static_cast<std::streamsize>(row.size()));
+    }
+  });
+}
+
+void write_geojson(const SolveResult& r, const Mission* mission, const std::string& path) {
+  const GeoOrigin origin = export_origin(r, path);
   const LocalFrame frame(origin);
-  std::string text = "{\"type\": \"FeatureCollection\", \"features\": [\n";
-  bool first = true;
-  const auto feature = [&](const std::string& properties, const std::string& geometry) {
-    text += (first ? "" : ",\n") + std::string("{\"type\": \"Feature\", \"properties\": ") + properties +
-            ", \"geometry\": " + geometry + "}";
-    first = false;
-  };
+  const MissionSolution& s = r.solution;
+  const TubeDomains& d = s.domains;
+  const std::string status = status_name(s);
+  json features = json::array();
+
+  // The envelope: widened by what the chords between converted points may lose.
+  const double latitude = std::abs(origin.latitude) + 1.0;  // the 100 km zone spans under a degree
+  const BoxOutline outline = outline_of_boxes(d.py, d.px, geodetic_margin(kGeodeticPiece, latitude));
+  if (!outline.polygons.empty()) {
+    json polygons = json::array();
+    for (const OutlinePolygon& p : outline.polygons) polygons.push_back(geodetic_polygon(frame, p));
+    json geometry = polygons.size() == 1 ? json{{"type", "Polygon"}, {"coordinates", polygons[0]}}
+                                         : json{{"type", "MultiPolygon"}, {"coordinates", polygons}};
+    json properties = {{"kind", "envelope"}, {"status", status}, {"samples", d.size()},
+                       {"unbounded_samples", outline.unbounded_boxes}, {"grid_cell_m", outline.cell}};
+    if (r.epoch) properties["epoch_utc"] = format_iso8601(*r.epoch);
+    features.push_back(feature(std::move(properties), std::move(geometry)));
+  }
   for (std::size_t i = 0; i < d.mines.size(); ++i) {
     const Vec3I& m = d.mines[i];
-    if (!m[0].is_bounded() || !m[1].is_bounded()) continue;
-    feature("{\"kind\": \"mine\", \"mine\": " + std::to_string(i) + "}",
-            "{\"type\": \"Polygon\", \"coordinates\": " + ring(frame, m[0], m[1]) + "}");
-  }
-  const std::size_t n = d.size();
-  const std::size_t stride = std::max<std::size_t>(1, (n + polygons - 1) / std::max<std::size_t>(polygons, 1));
-  std::string envelope;
-  for (std::size_t k = 0; k < n; k += stride) {
-    Interval north = d.px[k], east = d.py[k];
-    for (std::size_t j = k; j < std::min(n, k + stride + 1); ++j) {
-      north = hull(north, d.px[j]);
-      east = hull(east, d.py[j]);
+    if (m[0].is_empty() || m[1].is_empty() || !m[0].is_bounded() || !m[1].is_bounded()) continue;
+    json properties = {{"kind", "mine"}, {"mine", i}, {"status", status}, {"marks", marks_of_mine(s, static_cast<int>(i))},
+                       {"north_width_m", m[0].width()}, {"east_width_m", m[1].width()}};
+    if (!m[2].is_empty() && m[2].is_bounded()) {
+      properties["down_lo_m"] = m[2].lo();
+      properties["down_hi_m"] = m[2].hi();
     }
-    if (!north.is_bounded() || !east.is_bounded()) continue;
-    envelope += (envelope.empty() ? "" : ", ") + ring(frame, north, east);
+    features.push_back(feature(std::move(properties), {{"type", "Polygon"}, {"coordinates", box_ring(geodetic_box(frame, m[0], m[1]))}}));
   }
-  if (!envelope.empty())
-    feature(epoch ? "{\"kind\": \"envelope\", \"epoch_utc\": \"" + format_iso8601(*epoch) + "\"}" : "{\"kind\": \"envelope\"}", "{\"type\": \"MultiPolygon\", \"coordinates\": [" + envelope + "]}");
-  text += "\n]}\n";
-  write_text_file(path, text);
+  if (mission)
+    for (std::size_t i = 0; i < mission->gps_time.size(); ++i) {
+      json properties = {{"kind", "gps_fix"}, {"status", status}, {"time", mission->gps_time[i]}};
+      if (i < s.gps_outlier.size()) properties["outlier"] = s.gps_outlier[i] != 0;
+      if (r.epoch) properties["utc"] = format_iso8601_micro(*r.epoch, mission->gps_time[i]);
+      features.push_back(feature(std::move(properties), {{"type", "Point"},
+                                                         {"coordinates", {mission->gps_longitude[i], mission->gps_latitude[i]}}}));
+    }
+  json collection = {{"type", "FeatureCollection"}, {"status", status}, {"gesmi_version", std::string(version())},
+                     {"features", std::move(features)}};
+  if (!s.report.consistent) collection["inconsistency"] = s.report.message;
+  write_text_file(path, collection.dump() + "\n");
 }
 
 }  // namespace gesmi::io

@@ -1,21 +1,37 @@
 #pragma once
-// Exports of a result for other tools: the mine boxes as CSV, and GeoJSON for GIS
-// (mine boxes and the envelope as polygons in WGS84 longitude/latitude).
+// Exports of a result for other tools (docs/formats.md, "Exports of a result"):
+//   - the mine boxes as CSV, in local metres and latitude/longitude;
+//   - the tube as CSV, one row per sample (time, UTC when the epoch is known, local
+//     bounds, latitude/longitude bounds);
+//   - GeoJSON (RFC 7946) for GIS: the envelope as one valid (Multi)Polygon, the union
+//     of the tube's boxes simplified only outward; the mine boxes as polygons; the GPS
+//     fixes as points when the mission is given.
+// Local bounds are written exactly (shortest round-trip text); geodetic bounds are
+// outward (io/exports/geodetic_box.h), so they contain the local ones. Every row and
+// feature carries the result's status: an inconsistent result's boxes are no answer.
 
-#include <cstdint>
-#include <optional>
+#include <span>
 #include <string>
 
+#include "io/files/result_file.h"
 #include "solver/mission/mission.h"
-#include "solver/network/tube_domains.h"
 
 namespace gesmi::io {
 
-void write_mines_csv(const TubeDomains& domains, const std::string& path);
-/// The envelope is written as one polygon per stretch of `stride` samples (the
-/// hull of their boxes), so a 60,000-step tube stays a few hundred polygons. Its
-/// properties carry the mission's UTC epoch (t = 0) when it has one.
-void write_geojson(const TubeDomains& domains, const GeoOrigin& origin, std::optional<std::int64_t> epoch,
-                   const std::string& path, std::size_t polygons = 600);
+/// The origin every geodetic export needs: the result's (format 5), else FormatError
+/// naming `path` with the remedy. Also refuses origins beyond kGeodeticExportLatitude.
+GeoOrigin export_origin(const SolveResult& result, const std::string& path);
+
+/// "consistent" or "inconsistent".
+const char* status_name(const MissionSolution& solution);
+
+/// Marks that belong to mine i: rows whose only remaining candidate is i and that no
+/// hypothesis removes.
+int marks_of_mine(const MissionSolution& solution, int mine);
+
+void write_mines_csv(const SolveResult& result, const std::string& path);
+void write_tube_csv(const SolveResult& result, const std::string& path);
+/// `fixes`: the mission whose GPS fixes become points (nullptr: none).
+void write_geojson(const SolveResult& result, const Mission* fixes, const std::string& path);
 
 }  // namespace gesmi::io

@@ -21,8 +21,9 @@ namespace {
 constexpr const char* kFormat = "gesmi-result";
 // 1: before digests (no format_version attribute); 2: per-dataset and root SHA-256;
 // 3: the waterfall stored as its feasible cells only; 4: the model keys of mission
-// format 3 (max_depth_rate, max_altitude_rate) and the mission's epoch_utc.
-constexpr H5FormatVersions kVersions{.current = 4, .oldest = 1, .when_absent = 1};
+// format 3 (max_depth_rate, max_altitude_rate) and the mission's epoch_utc; 5: the
+// mission's origin (origin_latitude, origin_longitude, datum), for geodetic exports.
+constexpr H5FormatVersions kVersions{.current = 5, .oldest = 1, .when_absent = 1};
 
 // Every dataset of a result, in the order the root digest lists them (format 3;
 // format 2 has no /waterfall/step and /waterfall/mine, its waterfall being dense).
@@ -32,10 +33,14 @@ const char* const kDatasets[] = {"/time",          "/tube/lower",       "/tube/u
                                  "/marks/outlier",  "/marks/time",      "/marks/range",    "/marks/mine",
                                  "/marks/side",     "/gps/outlier"};
 
+constexpr const char* kDatum = "WGS84";
+
 bool format_3_only(std::string_view name) { return name == "/waterfall/step" || name == "/waterfall/mine"; }
 
 // The root attributes the root digest covers (timings are informative and left out).
-std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& r) {
+// `format_version`: the layout the fields are listed for (a result is always written
+// as today's, whatever format it was read from).
+std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& r, std::int64_t format_version) {
   const MissionSolution& s = r.solution;
   std::vector<std::pair<std::string, std::string>> fields = {
           {"status", s.report.consistent ? "consistent" : "inconsistent"},
@@ -51,8 +56,13 @@ std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& 
           {"mark_count", std::to_string(s.mark_count())},
           {"gesmi_version", r.version}};
   if (r.epoch) fields.emplace_back("epoch_utc", format_iso8601(*r.epoch));
+  if (format_version >= 5) {
+    fields.emplace_back("origin_latitude", format_number(r.origin->latitude));
+    fields.emplace_back("origin_longitude", format_number(r.origin->longitude));
+    fields.emplace_back("datum", kDatum);
+  }
   // The /model attributes, exactly (shortest round-trip text): those the file's format has.
-  const int model_version = r.format_version >= 4 ? 3 : 2;
+  const int model_version = format_version >= 4 ? 3 : 2;
   for (const SensorModelField& f : sensor_model_fields())
     if (f.since_version <= model_version) fields.emplace_back("/model/" + std::string(f.key), format_number(s.model.*f.member));
   for (const SensorModelChoice& c : sensor_model_choices())
@@ -168,9 +178,11 @@ void record_inputs(SolveResult& r, const Mission& mission, std::string navigatio
   r.marks_digest = marks_digest(mission, r.solution.mark_count());
   r.version = std::string(version());
   r.epoch = mission.epoch;
+  r.origin = mission.origin;
 }
 
 void write_result(const SolveResult& r, const std::string& path) {
+  if (!r.origin) throw FormatError(path + ": the result has no origin to record (record_inputs() gives it)");
   const MissionSolution& s = r.solution;
   AtomicOutput out(path);
   {
@@ -204,7 +216,7 @@ void write_result(const SolveResult& r, const std::string& path) {
     write_digested(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size());
     write_format(f, kFormat, kVersions);
     write_model_attributes(f, "/model", s.model);
-    const std::vector<std::pair<std::string, std::string>> fields = root_fields(r);
+    const std::vector<std::pair<std::string, std::string>> fields = root_fields(r, kVersions.current);
     f.set_attribute("/", "status", std::string(s.report.consistent ? "consistent" : "inconsistent"));
     f.set_attribute("/", "mode", std::string(solve_mode_name(s.report.mode)));
     f.set_attribute("/", "inconsistency", s.report.message);
@@ -218,6 +230,9 @@ void write_result(const SolveResult& r, const std::string& path) {
     f.set_attribute("/", "mark_count", static_cast<std::int64_t>(s.mark_count()));
     f.set_attribute("/", "gesmi_version", r.version);
     if (r.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*r.epoch));
+    f.set_attribute("/", "origin_latitude", r.origin->latitude);
+    f.set_attribute("/", "origin_longitude", r.origin->longitude);
+    f.set_attribute("/", "datum", std::string(kDatum));
     for (const auto& [name, ms] : s.timings_ms) f.set_attribute("/", "timing_" + name + "_ms", ms);
     std::vector<std::pair<std::string, std::string>> digested = fields;
     for (const char* dataset : kDatasets) digested.emplace_back(dataset, *f.string_attribute(dataset, "sha256"));
@@ -260,6 +275,16 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     r.epoch = parse_epoch_utc(*epoch);
     if (!r.epoch || r.format_version < 4)
       bad(f, "/", "attribute epoch_utc is not a UTC time YYYY-MM-DDThh:mm:ssZ of a format-4 result");
+  }
+  if (r.format_version >= 5) {
+    const auto number = [&](const char* name, double limit) {
+      const auto v = f.double_attribute("/", name);
+      if (!v) bad(f, "/", std::string("missing attribute ") + name);
+      if (!(std::abs(*v) <= limit)) bad(f, "/", std::string("attribute ") + name + " must be within +-" + format_number(limit) + " degrees");
+      return *v;
+    };
+    r.origin = GeoOrigin{number("origin_latitude", 90.0), number("origin_longitude", 180.0)};
+    if (text("datum") != kDatum) bad(f, "/", std::string("attribute datum must be ") + kDatum);
   }
   if (verified) {
     s.model = read_model_attributes(f, "/model", r.format_version >= 4 ? 3 : 2);  // the model keys of its mission format
@@ -357,7 +382,7 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     }
   }
   if (verified) {
-    std::vector<std::pair<std::string, std::string>> fields = root_fields(r);
+    std::vector<std::pair<std::string, std::string>> fields = root_fields(r, r.format_version);
     for (const char* dataset : kDatasets) {
       if (r.format_version < 3 && format_3_only(dataset)) continue;
       const auto stored = f.string_attribute(dataset, "sha256");

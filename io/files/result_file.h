@@ -25,9 +25,11 @@ struct SolveResult {
   std::string navigation_digest, bounds_digest, marks_digest;  // SHA-256 of the inputs (io/files/mission_digest.h)
   std::string version;  // gesmi that wrote it
   std::optional<std::int64_t> epoch;  // the mission's UTC epoch of t = 0, when it has one
+  /// The mission's local frame origin (WGS84); absent in results before format 5.
+  std::optional<GeoOrigin> origin;
   /// Layout of the file read: 1 for results written before digests existed (readable,
-  /// but unfit for a warm start), 2 and 3 with digests, 4 today (what it is written as).
-  std::int64_t format_version = 4;
+  /// but unfit for a warm start), 2 to 4 with digests, 5 today (what it is written as).
+  std::int64_t format_version = 5;
 };
 
 /// The parts of a result a reader needs besides its attributes, times, mine boxes and
@@ -40,7 +42,7 @@ struct ResultParts {
 
 /// Records in `result` what it was computed from: the digests of the mission's
 /// navigation (`navigation_digest`, computed when empty), bounds and marks, the gesmi
-/// version and the mission's epoch.
+/// version, the mission's epoch and its origin.
 void record_inputs(SolveResult& result, const Mission& mission, std::string navigation_digest = {});
 
 void write_result(const SolveResult& result, const std::string& path);

@@ -30,8 +30,8 @@ std::vector<std::string> write_solve_outputs(const SolveResult& result, const Mi
   const MissionSolution& s = result.solution;
   const std::vector<std::string> siblings = solve_output_siblings(result_path);
   write_result(result, result_path);
-  if (asked.mines_csv) write_mines_csv(s.domains, siblings[0]);
-  if (asked.geojson) write_geojson(s.domains, mission.origin, mission.epoch, siblings[1]);
+  if (asked.mines_csv) write_mines_csv(result, siblings[0]);
+  if (asked.geojson) write_geojson(result, &mission, siblings[1]);
   if (asked.envelope_png) {
     EnvelopePicture picture;
     picture.domains = &s.domains;

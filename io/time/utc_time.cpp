@@ -154,4 +154,19 @@ std::string format_iso8601(std::int64_t seconds) {
   return text;
 }
 
+std::string format_iso8601_micro(std::int64_t epoch, double t) {
+  const double whole = std::floor(t);
+  auto micro = static_cast<std::int64_t>(std::llround((t - whole) * 1e6));
+  auto seconds = epoch + static_cast<std::int64_t>(whole);
+  if (micro == 1000000) {
+    micro = 0;
+    ++seconds;
+  }
+  std::string text = format_iso8601(seconds);
+  char fraction[16];
+  std::snprintf(fraction, sizeof fraction, ".%06lldZ", static_cast<long long>(micro));
+  text.pop_back();  // the 'Z'
+  return text + fraction;
+}
+
 }  // namespace gesmi::io

@@ -45,6 +45,9 @@ std::optional<int> parse_utc_offset(std::string_view text);
 
 /// "YYYY-MM-DDThh:mm:ssZ" of whole seconds since 1970.
 std::string format_iso8601(std::int64_t seconds);
+/// The UTC time `t` seconds after `epoch`, to the microsecond (nearest):
+/// "YYYY-MM-DDThh:mm:ss.ffffffZ".
+std::string format_iso8601_micro(std::int64_t epoch, double t);
 
 /// Days since 1970-01-01 of a calendar date, or nullopt when the date does not exist.
 std::optional<std::int64_t> days_since_1970(int year, int month, int day);

@@ -11,10 +11,13 @@ namespace gesmi {
 
 /// WGS84's flattening, a defining constant of the ellipsoid.
 inline constexpr double kWgs84Flattening = 1.0 / 298.257223563;
+/// WGS84's equatorial radius a (m), a defining constant; also the smallest prime
+/// vertical radius N, so a cos(latitude) bounds a degree of longitude's metres below.
+inline constexpr double kWgs84EquatorialRadius = 6378137.0;
 /// WGS84's smallest radius of curvature b^2 / a = a (1 - f)^2 (m): the meridian's, at
 /// the equator.
 inline constexpr double kWgs84SmallestRadius =
-    6378137.0 * (1.0 - kWgs84Flattening) * (1.0 - kWgs84Flattening);
+    kWgs84EquatorialRadius * (1.0 - kWgs84Flattening) * (1.0 - kWgs84Flattening);
 
 /// An upper bound of the frame's relative scale error along a path anywhere within
 /// `distance` metres of the origin: 1.01 distance² / (2 M²); the 1 % covers the

@@ -167,7 +167,7 @@ TEST(BadInput, TruncatedOrForeignHdf5IsRefusedBySolveAndExport) {
       {"export truncated", {}, {"export", mission + ".truncated.h5"}, {mission + ".truncated.h5: ", "truncated"}},
       {"export missing", {}, {"export", "@/none.h5"}, {"@/none.h5: cannot open the file"}},
       {"export a text file as gesmi-txt", {{"nav.h5", kNav}}, {"export", "@/nav.h5", "--format", "gesmi-txt"}, {"@/nav.h5: not an HDF5 file"}},
-      {"unknown format", {}, {"export", mission, "--format", "json"}, {"--format: expected csv, logger or gesmi-txt"}},
+      {"unknown format", {}, {"export", mission, "--format", "json"}, {"--format: expected csv, logger, gesmi-txt, tube-csv, mines-csv or geojson"}},
   };
   for (const Case& c : exports) run_case(c, "csv");
   // Valid HDF5 with a missing dataset or a wrong shape, edited by Debian's h5py.

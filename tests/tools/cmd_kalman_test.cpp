@@ -75,5 +75,26 @@ TEST(CompareKalman, WritesTheReportAndTheThreeFigures) {
   EXPECT_EQ(WEXITSTATUS(std::system(mismatch.c_str())), 2);
 }
 
+TEST(CompareKalman, RefusesAnInconsistentResultUnlessAskedAndThenSaysSo) {
+  const std::string dir = temp_folder("compare_inconsistent");
+  ASSERT_EQ(run_gesmi({"simulate", "--seed", "9", "--outliers", "1", "--duration", "2400", "-o", dir + "/m.h5"}).exit_code, 0);
+  ASSERT_EQ(run_gesmi({"solve", dir + "/m.h5", "-o", dir + "/r.h5"}).exit_code, 3);
+  ASSERT_EQ(run_gesmi({"kalman", dir + "/m.h5", "-o", dir + "/k.h5"}).exit_code, 0);
+  const std::string command = "/usr/bin/python3 " + source_dir() + "/tools/compare_kalman.py " + dir + "/m.h5 " + dir +
+                              "/r.h5 " + dir + "/k.h5 -o " + dir + "/report";
+  EXPECT_EQ(WEXITSTATUS(std::system((command + " > " + dir + "/out.txt 2> " + dir + "/err.txt").c_str())), 3);
+  std::ifstream err(dir + "/err.txt");
+  std::stringstream why;
+  why << err.rdbuf();
+  EXPECT_EQ(line_count(why.str()), 1) << why.str();
+  EXPECT_NE(why.str().find("--show-inconsistent"), std::string::npos) << why.str();
+  EXPECT_FALSE(fs::exists(dir + "/report"));
+  ASSERT_EQ(std::system((command + " --show-inconsistent > /dev/null 2>&1").c_str()), 0);
+  std::ifstream in(dir + "/report/report.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("INCONSISTENT"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace gesmi::test

@@ -164,7 +164,7 @@ TEST(OperatorLoop, EveryMissedDetectionLiesInAListedWindow) {
   std::ifstream csv(dir + "/w.csv");
   std::string line;
   std::getline(csv, line);
-  EXPECT_EQ(line, "mine,t_start,t_end,range_lo,range_hi");
+  EXPECT_EQ(line, "mine,t_start,t_end,range_lo,range_hi,status");
   struct Window {
     int mine;
     double t0, t1, r0, r1;

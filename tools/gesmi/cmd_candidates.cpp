@@ -5,9 +5,11 @@
 #include "io/output/output_set.h"
 #include "io/output/atomic_output.h"
 #include "io/files/result_file.h"
+#include "io/imports/csv_number.h"
 #include "solver/network/look_again.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/inconsistent_gate.h"
 
 namespace gesmi::cli {
 namespace {
@@ -17,22 +19,27 @@ namespace po = boost::program_options;
 int run_candidates(std::span<const std::string> args) {
   po::options_description options("candidates options");
   options.add_options()("result", po::value<std::string>()->required(), "result file of gesmi solve")(
-      "csv", po::value<std::string>(), "also write the windows as CSV (mine,t_start,t_end,range_lo,range_hi)");
+      "csv", po::value<std::string>(), "also write the windows as CSV (mine,t_start,t_end,range_lo,range_hi,status)");
+  add_show_inconsistent(options);
   po::positional_options_description positional;
   positional.add("result", 1);
   po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi candidates RESULT.h5 [--csv OUT.csv]")) return kExitOk;
+  if (!parse_options(args, options, positional, v, "gesmi candidates RESULT.h5 [--csv OUT.csv] [--show-inconsistent]")) return kExitOk;
   io::OutputSet outputs(input_files(v, {"result"}));
   if (v.count("csv")) outputs.check(v["csv"].as<std::string>());
   const io::SolveResult file = io::read_result(v["result"].as<std::string>(), {.tube = false});
   const MissionSolution& r = file.solution;
+  if (!accept_result_status(v, "candidates", v["result"].as<std::string>(), r.report.consistent)) return kExitInconsistent;
+  const char* status = r.report.consistent ? "consistent" : "inconsistent";
+  if (!r.report.consistent) std::printf("INCONSISTENT result: these windows are no answer\n");
   const std::vector<LookAgainWindow> windows = look_again_windows(r.waterfall, r.time, r.mark_time, r.candidates);
-  std::string csv = "mine,t_start,t_end,range_lo,range_hi\n";
+  std::string csv = "mine,t_start,t_end,range_lo,range_hi,status\n";
   std::printf("%-5s %10s %10s %9s %9s\n", "mine", "t_start", "t_end", "range_lo", "range_hi");
   for (const LookAgainWindow& w : windows) {
-    char line[160];
-    std::snprintf(line, sizeof line, "%d,%.1f,%.1f,%.2f,%.2f\n", w.mine, w.t_start, w.t_end, w.range_lo, w.range_hi);
-    csv += line;
+    // Exact numbers (shortest round-trip text): a window's bounds are never rounded inward.
+    csv += std::to_string(w.mine);
+    for (const double x : {w.t_start, w.t_end, w.range_lo, w.range_hi}) csv += "," + io::format_number(x);
+    csv += std::string(",") + status + "\n";
     std::printf("%-5d %10.1f %10.1f %9.2f %9.2f\n", w.mine, w.t_start, w.t_end, w.range_lo, w.range_hi);
   }
   if (windows.empty()) std::printf("no window: every place a mine can be on the swath has a mark\n");

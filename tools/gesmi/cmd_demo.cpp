@@ -46,7 +46,7 @@ int run_demo(std::span<const std::string> args) {
     return code;
   const int solved = run_command("solve", {mission, "-o", result, "--png", "--geojson", "--mines-csv"});
   if (solved != kExitOk && solved != kExitInconsistent) return solved;
-  if (const int code = run_command("waterfall", {result, "-o", dir + "/waterfall.png"})) return code;
+  if (const int code = run_command("waterfall", {result, "-o", dir + "/waterfall.png", "--show-inconsistent"})) return code;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const io::SolveResult file = io::read_result(result, {.tube = true, .waterfall = false});

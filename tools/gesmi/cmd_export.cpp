@@ -1,5 +1,5 @@
 // gesmi export: a mission back to the CSV files of gesmi import (docs/formats.md),
-// or to a GESMI text log.
+// or to a GESMI text log; a result as CSV (tube, mine boxes) or GeoJSON for GIS.
 
 #include <cstdio>
 
@@ -7,11 +7,15 @@
 #include "io/exports/export_csv.h"
 #include "io/exports/export_gesmi_txt.h"
 #include "io/exports/export_logger.h"
+#include "io/exports/result_exports.h"
+#include "io/files/result_file.h"
+#include "io/files/mission_digest.h"
 #include "io/time/utc_time.h"
 #include "io/text/message_text.h"
 #include "io/files/mission_file.h"
 #include "io/output/output_set.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/inconsistent_gate.h"
 #include "tools/gesmi/input_files.h"
 
 namespace gesmi::cli {
@@ -21,31 +25,73 @@ namespace po = boost::program_options;
 
 constexpr std::int64_t kDefaultLoggerEpoch = 1778745600;  // 2026-05-14T08:00:00Z
 
+bool is_result_format(const std::string& format) {
+  return format == "tube-csv" || format == "mines-csv" || format == "geojson";
+}
+
+// A result's exports: one file, every row or feature marked with the result's status.
+int export_result(const po::variables_map& v, const std::string& format, const std::string& output,
+                  io::OutputSet& outputs) {
+  const std::string path = v["file"].as<std::string>();
+  const io::SolveResult r = io::read_result(path, {.tube = format != "mines-csv", .waterfall = false});
+  if (!accept_result_status(v, "export", path, r.solution.report.consistent)) return kExitInconsistent;
+  io::export_origin(r, path);
+  std::optional<Mission> mission;
+  if (v.count("mission")) {
+    if (format != "geojson") throw UsageError("--mission: only the geojson format uses the mission (its GPS fixes)");
+    mission = io::read_mission(v["mission"].as<std::string>(), io::TruthReading::skip);
+    if (io::navigation_digest(*mission) != r.navigation_digest)
+      throw UsageError("--mission: " + v["mission"].as<std::string>() + " is not the mission " + path +
+                       " was solved from (its navigation digest differs)");
+  }
+  if (format == "tube-csv") io::write_tube_csv(r, output);
+  if (format == "mines-csv") io::write_mines_csv(r, output);
+  if (format == "geojson") io::write_geojson(r, mission ? &*mission : nullptr, output);
+  outputs.commit();
+  const char* status = r.solution.report.consistent ? "" : ", INCONSISTENT result";
+  if (format == "tube-csv") std::printf("wrote %s (%zu samples%s)\n", output.c_str(), r.solution.time.size(), status);
+  if (format == "mines-csv") std::printf("wrote %s (%d mines%s)\n", output.c_str(), r.solution.mine_count, status);
+  if (format == "geojson")
+    std::printf("wrote %s (envelope, %d mine boxes, %zu GPS fixes%s)\n", output.c_str(), r.solution.mine_count,
+                mission ? mission->gps_time.size() : std::size_t{0}, status);
+  return kExitOk;
+}
+
 int run_export(std::span<const std::string> args) {
   po::options_description options("export options");
   options.add_options()
-      ("mission", po::value<std::string>()->required(), "mission file (HDF5)")
+      ("file", po::value<std::string>()->required(), "mission file (csv, logger, gesmi-txt) or result file (tube-csv, mines-csv, geojson)")
       ("format", po::value<std::string>()->default_value("csv"),
-       "csv (a folder of CSV files), logger (a folder: multi-rate log, map, NMEA, marks) or gesmi-txt (one file)")
-      ("output,o", po::value<std::string>()->required(), "folder to create (csv, logger) or file to write (gesmi-txt)")
+       "a mission: csv (a folder of CSV files), logger (a folder: multi-rate log, map, NMEA, marks) or gesmi-txt (one file); "
+       "a result: tube-csv (the tube per sample, local and latitude/longitude bounds), mines-csv (the mine boxes) or "
+       "geojson (envelope and mine boxes for GIS)")
+      ("output,o", po::value<std::string>()->required(), "folder to create (csv, logger) or file to write (the others)")
+      ("mission", po::value<std::string>(), "geojson: the result's mission, to add its GPS fixes as points")
       ("epoch", po::value<std::string>(), "logger: UTC time of t = 0, whole seconds (default: the mission's, else 2026-05-14T08:00:00Z)")
       ("dvl-every", po::value<std::string>()->default_value("2"), "logger: a DVL reading every N samples")
       ("depth-every", po::value<std::string>()->default_value("10"), "logger: a depth reading every N samples")
       ("dvl-gap", po::value<std::string>(), "logger: no DVL reading from FROM to TO s (FROM:TO)");
+  add_show_inconsistent(options);
   po::positional_options_description positional;
-  positional.add("mission", 1);
+  positional.add("file", 1);
   po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi export MISSION.h5 -o DIR [--format csv|logger|gesmi-txt] [logger options]"))
+  if (!parse_options(args, options, positional, v, "gesmi export MISSION.h5 -o DIR [--format csv|logger|gesmi-txt] [logger options]\n"
+                     "       gesmi export RESULT.h5 -o FILE --format tube-csv|mines-csv|geojson [--mission MISSION.h5] "
+                     "[--show-inconsistent]"))
     return kExitOk;
   const std::string format = v["format"].as<std::string>(), output = v["output"].as<std::string>();
-  if (format != "csv" && format != "gesmi-txt" && format != "logger")
-    throw UsageError("--format: expected csv, logger or gesmi-txt, got " + io::quoted_input(format));
-  io::OutputSet outputs(input_files(v, {"mission"}));
+  if (format != "csv" && format != "gesmi-txt" && format != "logger" && !is_result_format(format))
+    throw UsageError("--format: expected csv, logger, gesmi-txt, tube-csv, mines-csv or geojson, got " + io::quoted_input(format));
+  io::OutputSet outputs(input_files(v, {"file", "mission"}));
+  if (is_result_format(format)) {
+    outputs.check(output);
+    return export_result(v, format, output, outputs);
+  }
   if (format == "csv" || format == "logger")
     io::check_export_folder(output);
   else
     outputs.check(output);
-  const Mission m = io::read_mission(v["mission"].as<std::string>());
+  const Mission m = io::read_mission(v["file"].as<std::string>());
   if (format == "csv") {
     outputs.prepare_folder(output);
     io::export_mission_csv(m, output);
@@ -78,7 +124,7 @@ int run_export(std::span<const std::string> args) {
       o.dvl_gap = {parse_double("--dvl-gap", text.substr(0, colon)), parse_double("--dvl-gap", text.substr(colon + 1))};
     }
     outputs.prepare_folder(output);
-    io::export_mission_logger(m, v["mission"].as<std::string>(), output, o);
+    io::export_mission_logger(m, v["file"].as<std::string>(), output, o);
     outputs.commit();
     std::printf("wrote %s/: log.csv (%zu rows), map.yaml, gps.nmea (%zu fixes), marks.csv (%zu), marks_map.yaml, model.yaml%s%s, "
                 "import-command.txt\n",
@@ -86,7 +132,7 @@ int run_export(std::span<const std::string> args) {
                 m.truth_mines.empty() ? "" : ", truth_mines.csv");
     return kExitOk;
   }
-  io::export_gesmi_txt(m, v["mission"].as<std::string>(), output);
+  io::export_gesmi_txt(m, v["file"].as<std::string>(), output);
   outputs.commit();
   std::printf("wrote %s: %zu rows, %zu position fixes (marks are not part of the GESMI text format)\n", output.c_str(),
               m.size(), m.gps_time.size());

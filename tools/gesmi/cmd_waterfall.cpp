@@ -10,6 +10,7 @@
 #include "solver/network/look_again.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/inconsistent_gate.h"
 #include "tools/gesmi/skip_existing.h"
 
 namespace gesmi::cli {
@@ -22,11 +23,12 @@ int run_waterfall(std::span<const std::string> args) {
   options.add_options()("result", po::value<std::string>()->required(), "result file of gesmi solve")(
       "output,o", po::value<std::string>()->required(), "PNG picture to write")(
       "max-range", po::value<std::string>()->default_value("75"), "range axis length (m)");
+  add_show_inconsistent(options);
   add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("result", 1);
   po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi waterfall RESULT.h5 -o waterfall.png [--skip-existing]")) return kExitOk;
+  if (!parse_options(args, options, positional, v, "gesmi waterfall RESULT.h5 -o waterfall.png [--show-inconsistent] [--skip-existing]")) return kExitOk;
   const double max_range = parse_non_negative("--max-range", v["max-range"].as<std::string>());
   if (!(max_range > 0.0) || !std::isfinite(max_range)) throw UsageError("--max-range: must be a positive number");
   const std::string output = v["output"].as<std::string>();
@@ -35,6 +37,7 @@ int run_waterfall(std::span<const std::string> args) {
   if (skipped_as_existing(v, "waterfall", {output})) return kExitOk;
   const io::SolveResult file = io::read_result(v["result"].as<std::string>(), {.tube = false});
   const MissionSolution& r = file.solution;
+  if (!accept_result_status(v, "waterfall", v["result"].as<std::string>(), r.report.consistent)) return kExitInconsistent;
   io::WaterfallPicture picture;
   picture.waterfall = &r.waterfall;
   picture.time = r.time;
@@ -44,11 +47,11 @@ int run_waterfall(std::span<const std::string> args) {
       if (r.candidates[j] >> i & 1) picture.marks.push_back({r.mark_time[j], r.mark_range[j], i});
   for (const LookAgainWindow& w : look_again_windows(r.waterfall, r.time, r.mark_time, r.candidates))
     picture.windows.push_back({w.mine, w.t_start, w.t_end, w.range_lo, w.range_hi});
-  picture.title = "reconstructed waterfall" + std::string(r.report.consistent ? "" : " (INCONSISTENT result)") +
+  picture.title = std::string(r.report.consistent ? "" : "INCONSISTENT result, no answer: ") + "reconstructed waterfall" +
                   ": grey = where each mine can appear, dots = marks, orange = look again";
   io::write_waterfall_png(picture, output);
   outputs.commit();
-  std::printf("wrote %s (%d mines, %zu marks, %zu windows to look at again)\n", output.c_str(), r.mine_count,
+  std::printf("wrote %s (%s%d mines, %zu marks, %zu windows to look at again)\n", output.c_str(), r.report.consistent ? "" : "INCONSISTENT result, ", r.mine_count,
               r.mark_time.size(), picture.windows.size());
   return kExitOk;
 }

@@ -61,7 +61,11 @@ TEST(FormatsDoc, CsvHeadersAreTheOnesTheReadersExpect) {
   const std::string doc = formats_doc();
   for (const char* header : {"time,roll,pitch,heading,vx,vy,vz,altitude,depth", "time,longitude,latitude",
                              "north_halfwidth,east_halfwidth", "time,mine,range,side", "time,north,east,down",
-                             "mine,north,east,down", "mine,north_lo,north_hi,east_lo,east_hi,down_lo,down_hi"})
+                             "mine,north,east,down",
+                             "mine,marks,north_lo,north_hi,east_lo,east_hi,down_lo,down_hi,latitude_lo,latitude_hi,longitude_lo,"
+                             "longitude_hi,status",
+                             "time,utc,north_lo,north_hi,east_lo,east_hi,down_lo,down_hi,latitude_lo,latitude_hi,longitude_lo,"
+                             "longitude_hi,status"})
     EXPECT_NE(doc.find(header), std::string::npos) << header;
   for (const NavHalfWidthColumn& c : nav_half_width_columns())
     EXPECT_NE(doc.find("`" + std::string(c.name) + "`"), std::string::npos) << c.name;

@@ -109,5 +109,12 @@ TEST(UtcTime, EpochSecondsKeepTheirFraction) {
   EXPECT_FALSE(parse_utc_offset("+5"));
 }
 
+TEST(UtcTime, FormatsFractionsToTheMicrosecondWithCarries) {
+  EXPECT_EQ(format_iso8601_micro(0, 1.5), "1970-01-01T00:00:01.500000Z");
+  EXPECT_EQ(format_iso8601_micro(0, 59.9999999), "1970-01-01T00:01:00.000000Z");  // rounds into the next minute
+  EXPECT_EQ(format_iso8601_micro(0, -0.25), "1969-12-31T23:59:59.750000Z");
+  EXPECT_EQ(format_iso8601_micro(1778745600, 0.1), "2026-05-14T08:00:00.100000Z");
+}
+
 }  // namespace
 }  // namespace gesmi::io

@@ -1,0 +1,68 @@
+#include "io/exports/geodetic_box.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "solver/mission/frame_scale.h"
+
+namespace gesmi::io {
+namespace {
+
+constexpr double kDegree = 180.0 / std::numbers::pi;
+constexpr double kRoundingSlack = 1.0 + 1e-9;  // covers the doubles' rounding in the margins below
+
+}  // namespace
+
+double geodetic_margin(double piece, double max_latitude) {
+  const double curvature = 4.0 * (1.0 + std::tan(std::abs(max_latitude) / kDegree)) / kWgs84SmallestRadius;
+  return (kLocalFrameError + piece * piece * curvature / 8.0) * kRoundingSlack;
+}
+
+double metres_as_latitude(double metres) { return metres / kWgs84SmallestRadius * kDegree * kRoundingSlack; }
+
+double metres_as_longitude(double metres, double max_latitude) {
+  return metres / (kWgs84EquatorialRadius * std::cos(std::abs(max_latitude) / kDegree)) * kDegree * kRoundingSlack;
+}
+
+GeoOrigin geodetic_point(const LocalFrame& frame, double north, double east) {
+  GeoOrigin g = frame.to_geodetic(north, east);
+  const double origin = frame.origin().longitude;
+  if (g.longitude - origin > 180.0) g.longitude -= 360.0;
+  if (g.longitude - origin < -180.0) g.longitude += 360.0;
+  return g;
+}
+
+GeodeticBox geodetic_box(const LocalFrame& frame, const Interval& north, const Interval& east) {
+  const double corners[5][2] = {{north.lo(), east.lo()}, {north.lo(), east.hi()}, {north.hi(), east.hi()},
+                                {north.hi(), east.lo()}, {north.lo(), east.lo()}};
+  GeodeticBox box{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  double longest_piece = 0;
+  for (int side = 0; side < 4; ++side) {
+    const double* a = corners[side];
+    const double* b = corners[side + 1];
+    const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+    const int pieces = static_cast<int>(std::clamp(std::ceil(length / kGeodeticPiece), 1.0, 1024.0));
+    longest_piece = std::max(longest_piece, length / pieces);
+    for (int i = 0; i < pieces; ++i) {
+      const double f = static_cast<double>(i) / pieces;
+      const GeoOrigin g = geodetic_point(frame, a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]));
+      box.latitude_lo = std::min(box.latitude_lo, g.latitude);
+      box.latitude_hi = std::max(box.latitude_hi, g.latitude);
+      box.longitude_lo = std::min(box.longitude_lo, g.longitude);
+      box.longitude_hi = std::max(box.longitude_hi, g.longitude);
+    }
+  }
+  // The latitude the margins are taken at: the box's farthest from the equator, plus
+  // what the margin itself may add (well under a degree).
+  const double latitude = std::max(std::abs(box.latitude_lo), std::abs(box.latitude_hi)) + 0.01;
+  const double margin = geodetic_margin(longest_piece * kRoundingSlack, latitude);
+  const double dlat = metres_as_latitude(margin), dlon = metres_as_longitude(margin, latitude);
+  box.latitude_lo -= dlat;
+  box.latitude_hi += dlat;
+  box.longitude_lo -= dlon;
+  box.longitude_hi += dlon;
+  return box;
+}
+
+}  // namespace gesmi::io

@@ -1,0 +1,47 @@
+#pragma once
+// Local boxes to latitude/longitude, outward: a geodetic box or polygon that contains
+// every sea-surface point whose projection on the local plane lies in the local box.
+//
+// The plane-to-geodetic map is smooth but not affine: along a straight local segment
+// of length h its latitude and longitude leave the chord between the end images by at
+// most h^2 K / 8, with K = 4 (1 + |tan(latitude)|) / M (M = b^2/a, the smallest
+// radius of curvature) a bound of the map's second derivatives in metres per metre^2.
+// Segments are cut into pieces of at most kGeodeticPiece metres and every bound is
+// widened by that deviation plus kLocalFrameError (the conversion's own error, far
+// below 1 cm). tests/io/geodetic_box_test.cpp checks the bounds against dense
+// sampling with GeographicLib.
+
+#include "io/geodesy.h"
+#include "solver/interval/interval.h"
+
+namespace gesmi::io {
+
+inline constexpr double kGeodeticPiece = 50.0;  // m: longest local segment between converted points
+
+/// Latitude and longitude bounds (degrees).
+struct GeodeticBox {
+  double latitude_lo, latitude_hi, longitude_lo, longitude_hi;
+};
+
+/// The widening (m) that covers the chord deviation of pieces up to `piece` metres
+/// long at latitudes up to |max_latitude| degrees, plus the conversion error.
+double geodetic_margin(double piece, double max_latitude);
+
+/// Largest |latitude| (degrees) the geodetic exports accept for an origin: the
+/// longitude's scale grows without bound toward the poles.
+inline constexpr double kGeodeticExportLatitude = 85.0;
+
+/// The local frame's point (north, east) with its longitude taken within 180 degrees of
+/// the origin's: a box or polygon across the antimeridian stays contiguous (its
+/// longitudes may pass 180 or -180, as GDAL and most GIS accept).
+GeoOrigin geodetic_point(const LocalFrame& frame, double north, double east);
+
+/// Outward geodetic bounds of the local box north x east (both bounded and non-empty).
+GeodeticBox geodetic_box(const LocalFrame& frame, const Interval& north, const Interval& east);
+
+/// A margin in metres as degrees of latitude and of longitude at latitudes up to
+/// |max_latitude| (both outward).
+double metres_as_latitude(double metres);
+double metres_as_longitude(double metres, double max_latitude);
+
+}  // namespace gesmi::io

@@ -1,0 +1,79 @@
+// geodetic_box() against dense sampling: every sea-surface point whose projection lies
+// in a local box (its edges sampled every few metres and its interior on a grid,
+// converted one by one) must fall inside the box's outward latitude/longitude bounds,
+// at low and high latitudes, near and far (90 km) from the origin, across the
+// antimeridian, for boxes of metres to kilometres. And the bounds stay tight: within a few centimetres of the
+// sampled extremes.
+
+#include "io/exports/geodetic_box.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gesmi::io {
+namespace {
+
+struct Case {
+  GeoOrigin origin;
+  double north, east, size;  // box centre (m) and side (m)
+};
+
+class GeodeticBoxTest : public ::testing::TestWithParam<Case> {};
+
+TEST_P(GeodeticBoxTest, ContainsEverySampledPointAndStaysTight) {
+  const Case c = GetParam();
+  const LocalFrame frame(c.origin);
+  const Interval north(c.north - c.size / 2, c.north + c.size / 2 * 0.7);
+  const Interval east(c.east - c.size / 2 * 0.8, c.east + c.size / 2);
+  const GeodeticBox box = geodetic_box(frame, north, east);
+  double lat_lo = INFINITY, lat_hi = -INFINITY, lon_lo = INFINITY, lon_hi = -INFINITY;
+  const auto sample = [&](double n, double e) {
+    const GeoOrigin g = geodetic_point(frame, n, e);
+    ASSERT_GE(g.latitude, box.latitude_lo) << n << ", " << e;
+    ASSERT_LE(g.latitude, box.latitude_hi) << n << ", " << e;
+    ASSERT_GE(g.longitude, box.longitude_lo) << n << ", " << e;
+    ASSERT_LE(g.longitude, box.longitude_hi) << n << ", " << e;
+    lat_lo = std::min(lat_lo, g.latitude);
+    lat_hi = std::max(lat_hi, g.latitude);
+    lon_lo = std::min(lon_lo, g.longitude);
+    lon_hi = std::max(lon_hi, g.longitude);
+  };
+  const int edge = 4000, grid = 40;
+  for (int i = 0; i <= edge; ++i) {
+    const double f = static_cast<double>(i) / edge;
+    const double n = north.lo() + f * north.width(), e = east.lo() + f * east.width();
+    sample(north.lo(), e);
+    sample(north.hi(), e);
+    sample(n, east.lo());
+    sample(n, east.hi());
+  }
+  for (int i = 0; i <= grid; ++i)
+    for (int j = 0; j <= grid; ++j)
+      sample(north.lo() + north.width() * i / grid, east.lo() + east.width() * j / grid);
+  // Tight: the margins add at most a few centimetres beyond the sampled extremes.
+  const double farthest = std::max(std::abs(lat_lo), std::abs(lat_hi));
+  const double metre_lat = 1.0 / 110000.0, metre_lon = metre_lat / std::cos(farthest * M_PI / 180.0);
+  EXPECT_LT(lat_lo - box.latitude_lo, 0.05 * metre_lat);
+  EXPECT_LT(box.latitude_hi - lat_hi, 0.05 * metre_lat);
+  EXPECT_LT(lon_lo - box.longitude_lo, 0.05 * metre_lon);
+  EXPECT_LT(box.longitude_hi - lon_hi, 0.05 * metre_lon);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    LatitudesDistancesSizes, GeodeticBoxTest,
+    ::testing::Values(Case{{48.2129, -4.4582}, 500, 300, 20}, Case{{48.2129, -4.4582}, 90000, 10000, 3000},
+                      Case{{0.0, 10.0}, -60000, 60000, 20000}, Case{{70.0, 20.0}, 80000, -40000, 20000},
+                      Case{{84.0, -150.0}, 20000, 85000, 20000}, Case{{-84.0, 179.99}, -90000, 1000, 5000},
+                      Case{{84.9, 0.0}, 0, 0, 40000}));
+
+TEST(GeodeticMargin, GrowsWithThePieceAndTheLatitude) {
+  EXPECT_GE(geodetic_margin(0.0, 0.0), kLocalFrameError);
+  EXPECT_LT(geodetic_margin(kGeodeticPiece, 60.0), 0.011);
+  EXPECT_GT(geodetic_margin(kGeodeticPiece, 84.0), geodetic_margin(kGeodeticPiece, 60.0));
+  EXPECT_GT(geodetic_margin(2 * kGeodeticPiece, 60.0), geodetic_margin(kGeodeticPiece, 60.0));
+}
+
+}  // namespace
+}  // namespace gesmi::io
