@@ -10,6 +10,7 @@
 #include "io/format_error.h"
 #include "io/imports/csv_number.h"
 #include "io/io_version.h"
+#include "io/report/report_json.h"
 #include "io/time/utc_time.h"
 #include "solver/tube/box_union_outline.h"
 
@@ -178,7 +179,7 @@ void write_geojson(const SolveResult& r, const Mission* mission, const std::stri
   json collection = {{"type", "FeatureCollection"}, {"status", status}, {"gesmi_version", std::string(version())},
                      {"features", std::move(features)}};
   if (!s.report.consistent) collection["inconsistency"] = s.report.message;
-  write_text_file(path, collection.dump() + "\n");
+  write_text_file(path, dump_shortest(collection) + "\n");
 }
 
 }  // namespace gesmi::io

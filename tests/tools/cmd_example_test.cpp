@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "tests/support/run_command.h"
 
 namespace gesmi::test {
@@ -11,13 +13,21 @@ TEST(CmdExample, JsonHasExactlyTheDocumentedKeysAndPairs) {
   const CommandResult r = run_gesmi({"example", "paper2d", "--delta-v", "1", "--delta-z", "1", "--delta-x", "inf", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(line_count(r.out), 1);
-  const char* keys[] = {"\"z1\": [[", "\"z2\": [[", "\"z3\": [[", "\"m\": [[", "\"v0\": [[", "\"v1\": [[",
-                        "\"v2\": [[", "\"v3\": [[", "\"x1\": [[", "\"x2\": [[", "\"x3\": [[", "\"x4\": [["};
-  for (const char* key : keys) EXPECT_NE(r.out.find(key), std::string::npos) << key;
-  // z has one pair, vectors two: 3 + 2 * 9 = 21 pairs.
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["schema"], "gesmi-report");
+  EXPECT_EQ(doc["command"], "example paper2d");
+  // z has one pair, vectors two: 3 + 2 * 9 = 21 pairs, each [lo, hi] with lo <= hi.
   std::size_t pairs = 0;
-  for (std::size_t i = r.out.find("[\"", 0); i != std::string::npos; i = r.out.find("[\"", i + 1)) ++pairs;
-  for (std::size_t i = 0; i + 1 < r.out.size(); ++i) pairs += (r.out[i] == '[' && (r.out[i + 1] == '-' || isdigit(r.out[i + 1])));
+  for (const char* key : {"z1", "z2", "z3", "m", "v0", "v1", "v2", "v3", "x1", "x2", "x3", "x4"}) {
+    ASSERT_TRUE(doc.contains(key)) << key;
+    for (const auto& pair : doc[key]) {
+      ASSERT_EQ(pair.size(), 2u) << key;
+      if (pair[0].is_number() && pair[1].is_number()) {
+        EXPECT_LE(pair[0].get<double>(), pair[1].get<double>()) << key;
+      }
+      ++pairs;
+    }
+  }
   EXPECT_EQ(pairs, 21u) << r.out;
 }
 
@@ -25,7 +35,7 @@ TEST(CmdExample, UnboundedEndsAreWrittenAsStrings) {
   // Without range data (dz = inf) m stays unbounded.
   const CommandResult r = run_gesmi({"example", "paper2d", "--delta-v", "1", "--delta-z", "inf", "--delta-x", "inf", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("\"m\": [[\"-inf\", \"inf\"], [\"-inf\", \"inf\"]]"), std::string::npos) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["m"], nlohmann::json::parse(R"([["-inf", "inf"], ["-inf", "inf"]])")) << r.out;
 }
 
 struct BadLine {

@@ -9,6 +9,7 @@
 #include "solver/network/look_again.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/command_report.h"
 #include "tools/gesmi/inconsistent_gate.h"
 
 namespace gesmi::cli {
@@ -21,6 +22,7 @@ int run_candidates(std::span<const std::string> args) {
   options.add_options()("result", po::value<std::string>()->required(), "result file of gesmi solve")(
       "csv", po::value<std::string>(), "also write the windows as CSV (mine,t_start,t_end,range_lo,range_hi,status)");
   add_show_inconsistent(options);
+  add_json_option(options);
   po::positional_options_description positional;
   positional.add("result", 1);
   po::variables_map v;
@@ -31,23 +33,35 @@ int run_candidates(std::span<const std::string> args) {
   const MissionSolution& r = file.solution;
   if (!accept_result_status(v, "candidates", v["result"].as<std::string>(), r.report.consistent)) return kExitInconsistent;
   const char* status = r.report.consistent ? "consistent" : "inconsistent";
-  if (!r.report.consistent) std::printf("INCONSISTENT result: these windows are no answer\n");
   const std::vector<LookAgainWindow> windows = look_again_windows(r.waterfall, r.time, r.mark_time, r.candidates);
   std::string csv = "mine,t_start,t_end,range_lo,range_hi,status\n";
-  std::printf("%-5s %10s %10s %9s %9s\n", "mine", "t_start", "t_end", "range_lo", "range_hi");
+  nlohmann::json listed = nlohmann::json::array();
   for (const LookAgainWindow& w : windows) {
     // Exact numbers (shortest round-trip text): a window's bounds are never rounded inward.
     csv += std::to_string(w.mine);
     for (const double x : {w.t_start, w.t_end, w.range_lo, w.range_hi}) csv += "," + io::format_number(x);
     csv += std::string(",") + status + "\n";
-    std::printf("%-5d %10.1f %10.1f %9.2f %9.2f\n", w.mine, w.t_start, w.t_end, w.range_lo, w.range_hi);
+    listed.push_back({{"mine", w.mine}, {"t_start", w.t_start}, {"t_end", w.t_end}, {"range_lo", w.range_lo},
+                      {"range_hi", w.range_hi}});
   }
-  if (windows.empty()) std::printf("no window: every place a mine can be on the swath has a mark\n");
   if (v.count("csv")) {
     io::write_text_file(v["csv"].as<std::string>(), csv);
     outputs.commit();
-    std::printf("wrote %s\n", v["csv"].as<std::string>().c_str());
   }
+  CommandReport report("candidates", v);
+  if (report.enabled()) {
+    report.inputs(v, {"result"});
+    if (v.count("csv")) report.output(v["csv"].as<std::string>());
+    report["status"] = status;
+    report["windows"] = listed;
+    return report.finish(kExitOk);
+  }
+  if (!r.report.consistent) std::printf("INCONSISTENT result: these windows are no answer\n");
+  std::printf("%-5s %10s %10s %9s %9s\n", "mine", "t_start", "t_end", "range_lo", "range_hi");
+  for (const LookAgainWindow& w : windows)
+    std::printf("%-5d %10.1f %10.1f %9.2f %9.2f\n", w.mine, w.t_start, w.t_end, w.range_lo, w.range_hi);
+  if (windows.empty()) std::printf("no window: every place a mine can be on the swath has a mark\n");
+  if (v.count("csv")) std::printf("wrote %s\n", v["csv"].as<std::string>().c_str());
   return kExitOk;
 }
 

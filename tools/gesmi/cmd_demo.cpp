@@ -10,29 +10,36 @@
 #include "io/output/output_set.h"
 #include "io/files/result_file.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/command_report.h"
 
 namespace gesmi::cli {
 namespace {
 
 namespace po = boost::program_options;
 
+// Runs a step, shown as the command a user would type (not with --json: stdout then
+// holds the reports only).
 int run_command(const std::string& name, const std::vector<std::string>& args) {
   for (const Command& c : commands())
     if (c.name == name) {
       std::string line = "$ gesmi " + name;
       for (const std::string& a : args) line += " " + a;
-      std::printf("%s\n", line.c_str());
+      if (args.empty() || args.back() != "--json") std::printf("%s\n", line.c_str());
       return c.run(args);
     }
   throw std::logic_error("missing command " + name);
 }
 
+constexpr const char* kDemoFiles[] = {"mission.h5",  "result.h5",        "result.envelope.png",
+                                     "waterfall.png", "result.mines.csv", "result.geojson"};
+
 int run_demo(std::span<const std::string> args) {
   po::options_description options("demo options");
   options.add_options()("output,o", po::value<std::string>()->default_value("gesmi-demo"), "folder for the demo files")(
       "seed", po::value<std::string>()->default_value("1"), "simulation seed");
+  options.add_options()("json", "print each step's JSON report, then the demo's own, one per line (docs/reports.md)");
   po::variables_map v;
-  if (!parse_options(args, options, {}, v, "gesmi demo [-o DIR] [--seed S]")) return kExitOk;
+  if (!parse_options(args, options, {}, v, "gesmi demo [-o DIR] [--seed S] [--json]")) return kExitOk;
   const std::string dir = v["output"].as<std::string>();
   const long long seed = parse_integer("--seed", v["seed"].as<std::string>());
   if (seed < 0) throw UsageError("--seed: must be >= 0");
@@ -42,15 +49,29 @@ int run_demo(std::span<const std::string> args) {
   const std::string mission = dir + "/mission.h5", result = dir + "/result.h5";
 
   const auto start = std::chrono::steady_clock::now();
-  if (const int code = run_command("simulate", {"--preset", "redermor", "--seed", std::to_string(seed), "-o", mission}))
+  CommandReport report("demo", v);
+  // Each step's arguments, with --json when asked: every step then prints its report.
+  const auto step = [&](std::vector<std::string> arguments) {
+    if (report.enabled()) arguments.push_back("--json");
+    return arguments;
+  };
+  if (const int code = run_command("simulate", step({"--preset", "redermor", "--seed", std::to_string(seed), "-o", mission})))
     return code;
-  const int solved = run_command("solve", {mission, "-o", result, "--png", "--geojson", "--mines-csv"});
+  const int solved = run_command("solve", step({mission, "-o", result, "--png", "--geojson", "--mines-csv"}));
   if (solved != kExitOk && solved != kExitInconsistent) return solved;
-  if (const int code = run_command("waterfall", {result, "-o", dir + "/waterfall.png", "--show-inconsistent"})) return code;
+  if (const int code = run_command("waterfall", step({result, "-o", dir + "/waterfall.png", "--show-inconsistent"})))
+    return code;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const io::SolveResult file = io::read_result(result, {.tube = true, .waterfall = false});
   const MissionSolution& r = file.solution;
+  if (report.enabled()) {
+    outputs.commit();
+    for (const char* name : kDemoFiles) report.output(dir + "/" + name);
+    report.timings({{"demo", seconds * 1000.0}});
+    report["status"] = r.report.consistent ? "consistent" : "inconsistent";
+    return report.finish(solved);
+  }
   std::printf("\nsummary: %s, %lld sweeps, propagation %.1f ms, whole demo %.1f s\n",
               r.report.consistent ? "consistent" : "INCONSISTENT", static_cast<long long>(r.report.sweeps),
               r.timings_ms.count("propagate") ? r.timings_ms.at("propagate") : 0.0, seconds);
@@ -61,8 +82,9 @@ int run_demo(std::span<const std::string> args) {
                 m[2].width());
   }
   outputs.commit();
-  std::printf("files in %s/: mission.h5 result.h5 result.envelope.png waterfall.png result.mines.csv result.geojson\n",
-              dir.c_str());
+  std::string names;
+  for (const char* name : kDemoFiles) names += std::string(" ") + name;
+  std::printf("files in %s/:%s\n", dir.c_str(), names.c_str());
   return solved;
 }
 

@@ -6,7 +6,8 @@
 
 #include "solver/network/paper2d.h"
 #include "tools/gesmi/cli_args.h"
-#include "tools/gesmi/json_writer.h"
+#include "io/report/report_json.h"
+#include "tools/gesmi/command_report.h"
 
 namespace gesmi::cli {
 namespace {
@@ -20,19 +21,19 @@ std::string text_interval(const Interval& x) {
   return buffer;
 }
 
-void print_json(const Paper2dDomains& d) {
-  std::string out = "{";
+// The domains as report fields: each key a list of intervals ([lo, hi], null when empty).
+void add_domains(CommandReport& report, const Paper2dDomains& d, const PropagationReport& propagation) {
   const auto add = [&](const std::string& key, const std::vector<Interval>& values) {
-    if (out.size() > 1) out += ", ";
-    out += json_string(key) + ": [";
-    for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + json_interval(values[i]);
-    out += "]";
+    nlohmann::json list = nlohmann::json::array();
+    for (const Interval& x : values) list.push_back(io::interval_json(x));
+    report[key] = list;
   };
   for (std::size_t k = 0; k < 3; ++k) add("z" + std::to_string(k + 1), {d.z[k]});
   add("m", {d.m[0], d.m[1]});
   for (std::size_t k = 0; k < 4; ++k) add("v" + std::to_string(k), {d.v[k][0], d.v[k][1]});
   for (std::size_t k = 1; k <= 4; ++k) add("x" + std::to_string(k), {d.x[k][0], d.x[k][1]});
-  std::printf("%s}\n", out.c_str());
+  report["sweeps"] = propagation.sweeps;
+  report["empty"] = propagation.empty;
 }
 
 void print_text(const Paper2dDomains& d, const PropagationReport& report) {
@@ -58,7 +59,7 @@ int run_example(std::span<const std::string> args) {
       ("delta-v", po::value<std::string>()->default_value("1"), "velocity error coefficient DV >= 0")
       ("delta-z", po::value<std::string>()->default_value("1"), "range error coefficient DZ >= 0")
       ("delta-x", po::value<std::string>()->default_value("inf"), "final GPS error coefficient DX >= 0")
-      ("json", "print one JSON object with keys z1 z2 z3 m v0..v3 x1..x4");
+      ("json", "print one JSON report (docs/reports.md) with keys z1 z2 z3 m v0..v3 x1..x4");
   po::variables_map values;
   if (!parse_options(args.subspan(1), options, {}, values,
                      "gesmi example paper2d [--delta-v DV] [--delta-z DZ] [--delta-x DX] [--json]"))
@@ -68,11 +69,12 @@ int run_example(std::span<const std::string> args) {
   deltas.z = parse_non_negative("--delta-z", values["delta-z"].as<std::string>());
   deltas.x = parse_non_negative("--delta-x", values["delta-x"].as<std::string>());
   const Paper2dResult result = solve_paper2d(paper2d_prior(deltas));
-  if (values.count("json"))
-    print_json(result.domains);
+  CommandReport report("example paper2d", values);
+  if (report.enabled())
+    add_domains(report, result.domains, result.report);
   else
     print_text(result.domains, result.report);
-  return kExitOk;
+  return report.finish(kExitOk);
 }
 
 const bool registered = register_command({"example", "run a built-in example: paper2d (seed 001, section II-B)", run_example});

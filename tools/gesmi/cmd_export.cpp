@@ -10,11 +10,13 @@
 #include "io/exports/result_exports.h"
 #include "io/files/result_file.h"
 #include "io/files/mission_digest.h"
+#include "io/report/report_json.h"
 #include "io/time/utc_time.h"
 #include "io/text/message_text.h"
 #include "io/files/mission_file.h"
 #include "io/output/output_set.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/command_report.h"
 #include "tools/gesmi/inconsistent_gate.h"
 #include "tools/gesmi/input_files.h"
 
@@ -27,6 +29,19 @@ constexpr std::int64_t kDefaultLoggerEpoch = 1778745600;  // 2026-05-14T08:00:00
 
 bool is_result_format(const std::string& format) {
   return format == "tube-csv" || format == "mines-csv" || format == "geojson";
+}
+
+// With --json, the report of a mission's export (true when printed).
+bool report_mission_export(const po::variables_map& v, const std::string& format, const std::string& output,
+                           const Mission& m) {
+  CommandReport report("export", v);
+  if (!report.enabled()) return false;
+  report.inputs(v, {"file"});
+  report.output(output);
+  report["format"] = format;
+  report["mission"] = io::mission_json(m);
+  report.finish(kExitOk);
+  return true;
 }
 
 // A result's exports: one file, every row or feature marked with the result's status.
@@ -48,6 +63,14 @@ int export_result(const po::variables_map& v, const std::string& format, const s
   if (format == "mines-csv") io::write_mines_csv(r, output);
   if (format == "geojson") io::write_geojson(r, mission ? &*mission : nullptr, output);
   outputs.commit();
+  CommandReport report("export", v);
+  if (report.enabled()) {
+    report.inputs(v, {"file", "mission"});
+    report.output(output);
+    report["format"] = format;
+    report["status"] = r.solution.report.consistent ? "consistent" : "inconsistent";
+    return report.finish(kExitOk);
+  }
   const char* status = r.solution.report.consistent ? "" : ", INCONSISTENT result";
   if (format == "tube-csv") std::printf("wrote %s (%zu samples%s)\n", output.c_str(), r.solution.time.size(), status);
   if (format == "mines-csv") std::printf("wrote %s (%d mines%s)\n", output.c_str(), r.solution.mine_count, status);
@@ -72,6 +95,7 @@ int run_export(std::span<const std::string> args) {
       ("depth-every", po::value<std::string>()->default_value("10"), "logger: a depth reading every N samples")
       ("dvl-gap", po::value<std::string>(), "logger: no DVL reading from FROM to TO s (FROM:TO)");
   add_show_inconsistent(options);
+  add_json_option(options);
   po::positional_options_description positional;
   positional.add("file", 1);
   po::variables_map v;
@@ -96,6 +120,7 @@ int run_export(std::span<const std::string> args) {
     outputs.prepare_folder(output);
     io::export_mission_csv(m, output);
     outputs.commit();
+    if (report_mission_export(v, format, output, m)) return kExitOk;
     std::printf("wrote %s/: nav.csv (%zu rows), gps.csv (%zu), marks.csv (%zu)%s%s, model.yaml, import-command.txt\n",
                 output.c_str(), m.size(), m.gps_time.size(), m.mark_count(), m.has_truth() ? ", truth.csv" : "",
                 m.truth_mines.empty() ? "" : ", truth_mines.csv");
@@ -126,6 +151,7 @@ int run_export(std::span<const std::string> args) {
     outputs.prepare_folder(output);
     io::export_mission_logger(m, v["file"].as<std::string>(), output, o);
     outputs.commit();
+    if (report_mission_export(v, format, output, m)) return kExitOk;
     std::printf("wrote %s/: log.csv (%zu rows), map.yaml, gps.nmea (%zu fixes), marks.csv (%zu), marks_map.yaml, model.yaml%s%s, "
                 "import-command.txt\n",
                 output.c_str(), m.size(), m.gps_time.size(), m.mark_count(), m.has_truth() ? ", truth.csv" : "",
@@ -134,6 +160,7 @@ int run_export(std::span<const std::string> args) {
   }
   io::export_gesmi_txt(m, v["file"].as<std::string>(), output);
   outputs.commit();
+  if (report_mission_export(v, format, output, m)) return kExitOk;
   std::printf("wrote %s: %zu rows, %zu position fixes (marks are not part of the GESMI text format)\n", output.c_str(),
               m.size(), m.gps_time.size());
   return kExitOk;

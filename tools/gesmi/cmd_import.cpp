@@ -11,6 +11,8 @@
 #include "io/files/mission_file.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/command_report.h"
+#include "io/report/report_json.h"
 #include "tools/gesmi/skip_existing.h"
 
 namespace gesmi::cli {
@@ -64,11 +66,22 @@ std::string optional_path(const po::variables_map& v, const char* name) {
   return v.count(name) ? v[name].as<std::string>() : std::string();
 }
 
-void print_summary(const Mission& m, const std::string& output, const std::vector<std::string>& notes = {}) {
+// The summary, or with --json the report: every file option given is an input.
+int finish_import(const po::variables_map& v, std::string_view kind, std::initializer_list<const char*> input_options,
+                  const Mission& m, const std::string& output, const std::vector<std::string>& notes = {}) {
+  CommandReport report("import " + std::string(kind), v);
+  if (report.enabled()) {
+    report.inputs(v, input_options);
+    report.output(output);
+    report["mission"] = io::mission_json(m);
+    report["notes"] = notes;
+    return report.finish(kExitOk);
+  }
   for (const std::string& note : notes) std::printf("%s\n", note.c_str());
   const std::string epoch = m.epoch ? ", t = 0 at " + io::format_iso8601(*m.epoch) : std::string();
   std::printf("wrote %s: %zu samples over %g s, %zu GPS fixes, %zu marks, %d mines%s\n", output.c_str(), m.size(),
               m.time.back() - m.time.front(), m.gps_time.size(), m.mark_count(), m.mine_count, epoch.c_str());
+  return kExitOk;
 }
 
 int import_marks(std::span<const std::string> args) {
@@ -79,6 +92,7 @@ int import_marks(std::span<const std::string> args) {
       ("into", po::value<std::string>()->required(), "mission file whose mark table is replaced")
       ("mines", po::value<std::string>(), "number of mines K (default: the mission's)")
       ("output,o", po::value<std::string>()->required(), "mission file to write");
+  add_json_option(options);
   add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("marks", 1);
@@ -94,8 +108,7 @@ int import_marks(std::span<const std::string> args) {
   io::import_marks(m, v["marks"].as<std::string>(), mines, optional_path(v, "map"));
   io::write_mission(m, output);
   outputs.commit();
-  print_summary(m, output);
-  return kExitOk;
+  return finish_import(v, "marks", {"marks", "into", "map"}, m, output);
 }
 
 int import_nav(std::span<const std::string> args) {
@@ -115,6 +128,7 @@ int import_nav(std::span<const std::string> args) {
       ("truth", po::value<std::string>(), "truth.csv: time,north,east,down (simulated missions)")
       ("truth-mines", po::value<std::string>(), "truth_mines.csv: mine,north,east,down")
       ("output,o", po::value<std::string>()->required(), "mission file to write");
+  add_json_option(options);
   add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("nav", 1);
@@ -146,8 +160,8 @@ int import_nav(std::span<const std::string> args) {
   const Mission m = io::import_nav(v["nav"].as<std::string>(), inputs, &notes);
   io::write_mission(m, output);
   outputs.commit();
-  print_summary(m, output, notes);
-  return kExitOk;
+  return finish_import(v, "nav", {"nav", "map", "gps", "marks", "marks-map", "config", "truth", "truth-mines"}, m, output,
+                       notes);
 }
 
 int import_gesmi_txt(std::span<const std::string> args) {
@@ -160,6 +174,7 @@ int import_gesmi_txt(std::span<const std::string> args) {
       ("marks", po::value<std::string>(), "marks CSV: time,mine,range,side")
       ("mines", po::value<std::string>(), "number of mines K (default 0)")
       ("output,o", po::value<std::string>()->required(), "mission file to write");
+  add_json_option(options);
   add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("log", 1);
@@ -182,8 +197,7 @@ int import_gesmi_txt(std::span<const std::string> args) {
   const Mission m = io::import_gesmi_txt(v["log"].as<std::string>(), xy == "fixes" ? io::GesmiXy::fixes : io::GesmiXy::truth, inputs);
   io::write_mission(m, output);
   outputs.commit();
-  print_summary(m, output);
-  return kExitOk;
+  return finish_import(v, "gesmi-txt", {"log", "marks", "config"}, m, output);
 }
 
 int run_import(std::span<const std::string> args) {

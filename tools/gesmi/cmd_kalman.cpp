@@ -12,7 +12,8 @@
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/progress.h"
 #include "tools/gesmi/skip_existing.h"
-#include "tools/gesmi/json_writer.h"
+#include "tools/gesmi/command_report.h"
+#include "io/report/report_json.h"
 
 namespace gesmi::cli {
 namespace {
@@ -29,13 +30,13 @@ int run_kalman(std::span<const std::string> args) {
       ("output,o", po::value<std::string>()->required(), "result file to write (HDF5)")
       ("config", po::value<std::string>(), "sensor bounds (YAML) overriding the mission's")
       ("noise-factor", po::value<std::string>()->default_value("1"), "variance = factor x bound^2 / 3")
-      ("iterations", po::value<std::string>()->default_value("2"), "linearisations of the range measurements")
-      ("stats", "print one JSON object with timings and the 3-sigma containment");
+      ("iterations", po::value<std::string>()->default_value("2"), "linearisations of the range measurements");
+  add_json_option(options, true);
   add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("mission", 1);
   po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--stats] [--skip-existing]"))
+  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--json] [--skip-existing]"))
     return kExitOk;
   KalmanOptions o;
   o.noise_factor = parse_double("--noise-factor", v["noise-factor"].as<std::string>());
@@ -71,23 +72,23 @@ int run_kalman(std::span<const std::string> args) {
   outputs.commit();
   file.timings_ms["write"] = elapsed_ms(start);
   progress.finish();
-  if (v.count("stats")) {
-    std::string json = "{\"steps\": " + std::to_string(mission.size()) + ", \"mines\": " + std::to_string(mission.mine_count) +
-                       ", \"containment_3sigma_trajectory\": " + json_number(c.trajectory) +
-                       ", \"containment_3sigma_mines\": " + json_number(c.mines) + ", \"timings_ms\": {";
-    bool first = true;
-    for (const auto& [name, ms] : file.timings_ms) {
-      json += (first ? "" : ", ") + json_string(name) + ": " + json_number(ms);
-      first = false;
-    }
-    std::printf("%s}}\n", json.c_str());
+  CommandReport report("kalman", v);
+  if (report.enabled()) {
+    report.input("mission", v["mission"].as<std::string>());
+    if (v.count("config")) report.input("config", v["config"].as<std::string>());
+    report.output(output);
+    report.timings(file.timings_ms);
+    report["kalman"] = {{"steps", mission.size()},
+                        {"mines", mission.mine_count},
+                        {"containment_3sigma_trajectory", io::number_json(c.trajectory)},
+                        {"containment_3sigma_mines", io::number_json(c.mines)}};
   } else {
     std::printf("kalman smoother: %zu steps in %.1f ms, written to %s", mission.size(), file.timings_ms["smooth"], output.c_str());
     if (!std::isnan(c.trajectory))
       std::printf("; truth within 3 sigma: %.1f %% of steps, %.0f %% of mines", 100.0 * c.trajectory, 100.0 * c.mines);
     std::printf("\n");
   }
-  return kExitOk;
+  return report.finish(kExitOk);
 }
 
 const bool registered = register_command({"kalman", "Kalman smoother baseline (EKF + RTS) on a mission", run_kalman});

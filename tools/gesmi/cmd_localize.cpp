@@ -14,6 +14,8 @@
 #include "solver/setinv/measurement_simulator.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/command_report.h"
+#include "io/report/report_json.h"
 #include "tools/gesmi/skip_existing.h"
 
 namespace gesmi::cli {
@@ -57,6 +59,24 @@ int simulate(LocalizationProblem problem, const po::variables_map& values) {
   return kExitOk;
 }
 
+// The hypotheses as report fields: data numbered from 0 (ranges first, then bearings).
+nlohmann::json localization_json(const LocalizationResult& r) {
+  nlohmann::json hypotheses = nlohmann::json::array();
+  for (const LocalizationHypothesis& h : r.hypotheses) {
+    nlohmann::json hull = nlohmann::json::array();
+    for (const Interval& x : h.component.hull) hull.push_back(io::interval_json(x));
+    hypotheses.push_back({{"outliers", h.outliers.outliers},
+                          {"outliers_determined", h.outliers.determined},
+                          {"inner_boxes", h.component.inner.size()},
+                          {"boundary_boxes", h.component.boundary.size()},
+                          {"hull", hull},
+                          {"inner_volume", h.component.inner_volume},
+                          {"outer_volume", h.component.inner_volume + h.component.boundary_volume},
+                          {"holds_truth", h.contains_truth}});
+  }
+  return {{"found", r.found}, {"q", r.q}, {"truth_enclosed", r.truth_enclosed}, {"hypotheses", hypotheses}};
+}
+
 int run_localize(std::span<const std::string> args) {
   po::options_description options("localize options");
   options.add_options()
@@ -68,6 +88,7 @@ int run_localize(std::span<const std::string> args) {
       ("error-fraction", po::value<std::string>()->default_value("0.9"), "--simulate: errors as a fraction of the bounds")
       ("range-outliers", po::value<std::string>(), "--simulate: range sensor indices given outlier values")
       ("bearing-outliers", po::value<std::string>(), "--simulate: bearing measurement indices given outlier values");
+  add_json_option(options);
   add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("scenario", 1);
@@ -83,10 +104,19 @@ int run_localize(std::span<const std::string> args) {
   if (skipped_as_existing(values, "localize", io::localization_output_files(folder))) return kExitOk;
   const LocalizationResult result = localize(problem);
   outputs.prepare_folder(folder);
-  io::write_localization_outputs(folder, problem, result);
+  const std::vector<std::string> written = io::write_localization_outputs(folder, problem, result);
   outputs.commit();
+  const int exit_code = result.found ? kExitOk : kExitInconsistent;
+  CommandReport report("localize", values);
+  if (report.enabled()) {
+    report.inputs(values, {"scenario"});
+    report.outputs(written);
+    report.timings({{"search", result.seconds * 1000.0}});
+    report["localization"] = localization_json(result);
+    return report.finish(exit_code);
+  }
   if (!values.count("quiet")) std::fputs(io::localization_summary(problem, result).c_str(), stdout);
-  return result.found ? kExitOk : kExitInconsistent;
+  return exit_code;
 }
 
 const bool registered = register_command(

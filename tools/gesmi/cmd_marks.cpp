@@ -10,20 +10,39 @@
 #include "io/files/mission_file.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/command_report.h"
 
 namespace gesmi::cli {
 namespace {
 
 namespace po = boost::program_options;
 
+nlohmann::json mark_json(const Mission& m, std::size_t j) {
+  return {{"row", j},
+          {"time", m.mark_time[j]},
+          {"mine", m.mark_mine[j] < 0 ? nlohmann::json(nullptr) : nlohmann::json(m.mark_mine[j])},
+          {"range", m.mark_range[j]},
+          {"side", m.mark_side[j] > 0 ? "starboard" : "port"}};
+}
+
 int list_marks(std::span<const std::string> args) {
   po::options_description options("marks list options");
   options.add_options()("mission", po::value<std::string>()->required(), "mission file");
+  add_json_option(options);
   po::positional_options_description positional;
   positional.add("mission", 1);
   po::variables_map v;
   if (!parse_options(args, options, positional, v, "gesmi marks list MISSION.h5")) return kExitOk;
   const Mission m = io::read_mission(v["mission"].as<std::string>());
+  CommandReport report("marks list", v);
+  if (report.enabled()) {
+    report.inputs(v, {"mission"});
+    nlohmann::json marks = nlohmann::json::array();
+    for (std::size_t j = 0; j < m.mark_count(); ++j) marks.push_back(mark_json(m, j));
+    report["marks"] = marks;
+    report["mines"] = m.mine_count;
+    return report.finish(kExitOk);
+  }
   std::printf("%5s %10s %5s %9s %10s\n", "index", "time", "mine", "range", "side");
   for (std::size_t j = 0; j < m.mark_count(); ++j) {
     const std::string mine = m.mark_mine[j] < 0 ? "?" : std::to_string(m.mark_mine[j]);
@@ -43,6 +62,7 @@ int add_mark(std::span<const std::string> args) {
       ("side", po::value<std::string>()->default_value("starboard"), "starboard or port")
       ("mine", po::value<std::string>()->default_value("?"), "mine number, or ? when unknown")
       ("output,o", po::value<std::string>()->required(), "mission file to write");
+  add_json_option(options);
   po::positional_options_description positional;
   positional.add("mission", 1);
   po::variables_map v;
@@ -72,6 +92,14 @@ int add_mark(std::span<const std::string> args) {
   if (!m.truth_marks_mine.empty()) m.truth_marks_mine.push_back(-1);
   io::write_mission(m, output);
   outputs.commit();
+  CommandReport report("marks add", v);
+  if (report.enabled()) {
+    report.inputs(v, {"mission"});
+    report.output(output);
+    report["added"] = mark_json(m, m.mark_count() - 1);
+    report["marks"] = m.mark_count();
+    return report.finish(kExitOk);
+  }
   std::printf("added mark %zu (t = %.1f s, mine %s, range %.2f m, %s); %s has %zu marks\n", m.mark_count() - 1, time,
               mine < 0 ? "?" : std::to_string(mine).c_str(), range, side.c_str(), output.c_str(), m.mark_count());
   return kExitOk;
@@ -82,6 +110,7 @@ int remove_mark(std::span<const std::string> args) {
   options.add_options()("mission", po::value<std::string>()->required(), "mission file")(
       "index", po::value<std::string>()->required(), "row of the mark table")(
       "output,o", po::value<std::string>()->required(), "mission file to write");
+  add_json_option(options);
   po::positional_options_description positional;
   positional.add("mission", 1).add("index", 1);
   po::variables_map v;
@@ -95,6 +124,7 @@ int remove_mark(std::span<const std::string> args) {
     throw UsageError("INDEX: " + io::quoted_input(v["index"].as<std::string>()) + " is not a row of the mark table (0.." +
                      std::to_string(static_cast<long long>(m.mark_count()) - 1) + ")");
   const auto at = static_cast<std::ptrdiff_t>(index);
+  const nlohmann::json removed = mark_json(m, static_cast<std::size_t>(index));
   m.mark_time.erase(m.mark_time.begin() + at);
   m.mark_mine.erase(m.mark_mine.begin() + at);
   m.mark_range.erase(m.mark_range.begin() + at);
@@ -103,6 +133,14 @@ int remove_mark(std::span<const std::string> args) {
   if (!m.truth_marks_mine.empty()) m.truth_marks_mine.erase(m.truth_marks_mine.begin() + at);
   io::write_mission(m, output);
   outputs.commit();
+  CommandReport report("marks remove", v);
+  if (report.enabled()) {
+    report.inputs(v, {"mission"});
+    report.output(output);
+    report["removed"] = removed;
+    report["marks"] = m.mark_count();
+    return report.finish(kExitOk);
+  }
   std::printf("removed mark %lld; %s has %zu marks\n", index, output.c_str(), m.mark_count());
   return kExitOk;
 }

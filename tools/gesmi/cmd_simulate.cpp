@@ -11,6 +11,8 @@
 #include "solver/sim/simulator.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/command_report.h"
+#include "io/report/report_json.h"
 #include "tools/gesmi/skip_existing.h"
 
 namespace gesmi::cli {
@@ -36,6 +38,7 @@ int run_simulate(std::span<const std::string> args) {
       ("unassociated", po::value<std::string>()->default_value("0"), "probability that a mark has no mine number")
       ("outliers", po::value<std::string>()->default_value("0"), "number of corrupted marks")
       ("config", po::value<std::string>(), "sensor bounds (YAML) the errors are drawn from, stored with the mission");
+  add_json_option(options);
   add_skip_existing(options);
   po::variables_map v;
   if (!parse_options(args, options, {}, v, kUsage)) return kExitOk;
@@ -68,10 +71,19 @@ int run_simulate(std::span<const std::string> args) {
   io::set_geodetic_gps(mission);
   io::write_mission(mission, output);
   outputs.commit();
-  std::printf("wrote %s: %zu samples over %.1f s, %d mines, %zu marks (%zu missed, %d outliers)\n", output.c_str(),
-              mission.size(), mission.time.back(), mission.mine_count, mission.mark_count(),
-              mission.truth_missed_marks.size() / 3, o.outliers);
-  return kExitOk;
+  CommandReport report("simulate", v);
+  if (report.enabled()) {
+    report.inputs(v, {"config"});
+    report.output(output);
+    report["mission"] = io::mission_json(mission);
+    report["simulation"] = {{"seed", o.seed}, {"errors", errors}, {"missed_marks", mission.truth_missed_marks.size() / 3},
+                            {"outliers", o.outliers}};
+  } else {
+    std::printf("wrote %s: %zu samples over %.1f s, %d mines, %zu marks (%zu missed, %d outliers)\n", output.c_str(),
+                mission.size(), mission.time.back(), mission.mine_count, mission.mark_count(),
+                mission.truth_missed_marks.size() / 3, o.outliers);
+  }
+  return report.finish(kExitOk);
 }
 
 const bool registered = register_command({"simulate", "simulate a reference-like mission with ground truth", run_simulate});

@@ -13,6 +13,8 @@
 #include "io/files/warm_start_file.h"
 #include "solver/solve/solve_mission.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/command_report.h"
+#include "io/report/report_json.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/progress.h"
 #include "tools/gesmi/skip_existing.h"
@@ -82,13 +84,19 @@ int run_solve(std::span<const std::string> args) {
   progress.finish();
 
   print_solve_notes(s);
-  if (v.count("stats"))
-    print_solve_stats(mission, s, timings, written);
-  else
+  CommandReport report("solve", v);
+  if (report.enabled()) {
+    report.input("mission", mission_path);
+    if (v.count("config")) report.input("config", v["config"].as<std::string>());
+    if (v.count("from")) report.input("from", v["from"].as<std::string>());
+    report.outputs(written);
+    report.timings(timings);
+    report["solve"] = io::solve_json(mission, s);
+  } else {
     print_solve_summary(mission, s, written);
-  if (s.report.consistent) return kExitOk;
-  std::fprintf(stderr, "gesmi solve: inconsistent data: %s\n", s.report.message.c_str());
-  return kExitInconsistent;
+  }
+  if (!s.report.consistent) std::fprintf(stderr, "gesmi solve: inconsistent data: %s\n", s.report.message.c_str());
+  return report.finish(s.report.consistent ? kExitOk : kExitInconsistent);
 }
 
 const bool registered = register_command({"solve", "interval solve of a mission: tube, mine boxes, waterfall", run_solve});

@@ -10,6 +10,7 @@
 #include "solver/network/look_again.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/command_report.h"
 #include "tools/gesmi/inconsistent_gate.h"
 #include "tools/gesmi/skip_existing.h"
 
@@ -24,6 +25,7 @@ int run_waterfall(std::span<const std::string> args) {
       "output,o", po::value<std::string>()->required(), "PNG picture to write")(
       "max-range", po::value<std::string>()->default_value("75"), "range axis length (m)");
   add_show_inconsistent(options);
+  add_json_option(options);
   add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("result", 1);
@@ -51,6 +53,16 @@ int run_waterfall(std::span<const std::string> args) {
                   ": grey = where each mine can appear, dots = marks, orange = look again";
   io::write_waterfall_png(picture, output);
   outputs.commit();
+  CommandReport report("waterfall", v);
+  if (report.enabled()) {
+    report.inputs(v, {"result"});
+    report.output(output);
+    report["status"] = r.report.consistent ? "consistent" : "inconsistent";
+    report["mines"] = r.mine_count;
+    report["marks"] = r.mark_time.size();
+    report["windows"] = picture.windows.size();
+    return report.finish(kExitOk);
+  }
   std::printf("wrote %s (%s%d mines, %zu marks, %zu windows to look at again)\n", output.c_str(), r.report.consistent ? "" : "INCONSISTENT result, ", r.mine_count,
               r.mark_time.size(), picture.windows.size());
   return kExitOk;

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "tools/gesmi/command_report.h"
+
 namespace gesmi::cli {
 
 void add_skip_existing(boost::program_options::options_description& options) {
@@ -15,6 +17,13 @@ bool skipped_as_existing(const boost::program_options::variables_map& values, st
   std::error_code ec;
   for (const std::string& path : outputs)
     if (!std::filesystem::is_regular_file(path, ec)) return false;
+  CommandReport report(std::string(command), values);
+  if (report.enabled()) {
+    report["skipped"] = true;
+    report["existing"] = outputs;
+    report.finish(0);
+    return true;
+  }
   std::string names;
   for (const std::string& path : outputs) names += (names.empty() ? "" : ", ") + path;
   std::printf("gesmi %.*s: %s already written; skipped (--skip-existing)\n", static_cast<int>(command.size()),

@@ -4,6 +4,7 @@
 
 #include "solver/network/mission_network.h"
 #include "tools/gesmi/cli_args.h"
+#include "tools/gesmi/command_report.h"
 #include "tools/gesmi/skip_existing.h"
 
 namespace gesmi::cli {
@@ -18,7 +19,6 @@ po::options_description solve_options() {
       ("config", po::value<std::string>(), "sensor bounds (YAML) overriding the mission's")
       ("max-sweeps", po::value<std::string>()->default_value("100"), "sweep limit")
       ("tolerance", po::value<std::string>()->default_value("0.001"), "stop when no bound moves more (m)")
-      ("stats", "print one JSON object with timings and sweeps on stdout")
       ("from", po::value<std::string>(), "warm start from an earlier result of this mission")
       ("max-outliers", po::value<std::string>(),
        "tolerate up to Q wrong marks or GPS fixes: the result holds every trajectory consistent with all the data "
@@ -31,6 +31,7 @@ po::options_description solve_options() {
       ("png", "also draw the envelope and mine boxes: RESULT.envelope.png")
       ("geojson", "also write the mine boxes and envelope as GeoJSON: RESULT.geojson")
       ("mines-csv", "also write the mine boxes as CSV: RESULT.mines.csv");
+  add_json_option(options, true);
   add_skip_existing(options);
   return options;
 }

@@ -7,7 +7,6 @@
 #include <numeric>
 
 #include "solver/network/inconsistency_text.h"
-#include "tools/gesmi/json_writer.h"
 
 namespace gesmi::cli {
 
@@ -53,26 +52,6 @@ void print_solve_summary(const Mission& m, const MissionSolution& s, const std::
   std::printf("%s: %s after %d sweeps, largest horizontal tube width %.1f m, written to %s\n",
               solve_mode_name(s.report.mode), s.report.consistent ? "consistent" : "INCONSISTENT", s.report.sweeps,
               s.domains.max_horizontal_width(), files.c_str());
-}
-
-void print_solve_stats(const Mission& m, const MissionSolution& s, const std::map<std::string, double>& timings,
-                       const std::vector<std::string>& written) {
-  std::string json = "{\"status\": " + json_string(s.report.consistent ? "consistent" : "inconsistent") +
-                     ", \"mode\": " + json_string(solve_mode_name(s.report.mode)) +
-                     ", \"sweeps\": " + std::to_string(s.report.sweeps) +
-                     ", \"converged\": " + (s.report.converged ? "true" : "false") +
-                     ", \"steps\": " + std::to_string(m.size()) + ", \"marks\": " + std::to_string(m.mark_count()) +
-                     ", \"max_tube_width_m\": " + json_number(s.domains.max_horizontal_width()) +
-                     ", \"work_items\": " + std::to_string(s.report.work_items) +
-                     ", \"beyond_frame_zone_m\": " + json_number(s.report.beyond_frame_zone) + ", \"files\": [";
-  for (std::size_t i = 0; i < written.size(); ++i) json += (i ? ", " : "") + json_string(written[i]);
-  json += "], \"timings_ms\": {";
-  bool first = true;
-  for (const auto& [name, ms] : timings) {
-    json += (first ? "" : ", ") + json_string(name) + ": " + json_number(ms);
-    first = false;
-  }
-  std::printf("%s}}\n", json.c_str());
 }
 
 }  // namespace gesmi::cli

@@ -1,6 +1,6 @@
 #pragma once
 // What `gesmi solve` prints about a solution: the candidate mines of marks without
-// a number, the outlier hypotheses, the one-line summary, or the --stats JSON.
+// a number, the outlier hypotheses and the one-line summary (--json: command_report.h).
 
 #include <map>
 #include <string>
@@ -15,8 +15,5 @@ namespace gesmi::cli {
 void print_solve_notes(const MissionSolution& solution);
 /// The candidates of unnumbered marks and the summary line naming the files written (stdout).
 void print_solve_summary(const Mission& mission, const MissionSolution& solution, const std::vector<std::string>& written);
-/// The --stats JSON object (stdout), timings and the files written included.
-void print_solve_stats(const Mission& mission, const MissionSolution& solution, const std::map<std::string, double>& timings,
-                       const std::vector<std::string>& written);
 
 }  // namespace gesmi::cli
