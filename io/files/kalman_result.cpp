@@ -5,9 +5,21 @@
 #include "io/output/atomic_output.h"
 #include "io/hdf5/h5_file.h"
 #include "io/io_version.h"
+#include "io/files/model_attributes.h"
+#include "io/files/provenance.h"
 #include "io/time/utc_time.h"
 
 namespace gesmi::io {
+namespace {
+
+constexpr DatasetUnits kKalmanUnits[] = {
+    {"/kalman/mean", "m, m, m", "smoothed position: north, east, down (local frame)"},
+    {"/kalman/cov", "m2", "covariance of the smoothed position (north, east, down)"},
+    {"/kalman/mines/mean", "m, m, m", "smoothed mine positions: north, east, down"},
+    {"/kalman/mines/cov", "m2", "covariance of each mine position (north, east, down)"},
+};
+
+}  // namespace
 
 void write_kalman_result(const KalmanFile& k, const std::string& path) {
   AtomicOutput out(path);
@@ -27,6 +39,15 @@ void write_kalman_result(const KalmanFile& k, const std::string& path) {
     f.set_attribute("/", "containment_3sigma_trajectory", k.containment_trajectory);
     f.set_attribute("/", "containment_3sigma_mines", k.containment_mines);
     for (const auto& [name, ms] : k.timings_ms) f.set_attribute("/", "timing_" + name + "_ms", ms);
+    f.set_attribute("/", "origin_latitude", k.origin.latitude);
+    f.set_attribute("/", "origin_longitude", k.origin.longitude);
+    f.set_attribute("/", "datum", std::string("WGS84"));
+    write_model_attributes(f, "/model", k.model);
+    write_provenance(f, "trajectory");
+    write_units(f, kKalmanUnits);
+    f.set_attribute("/time", "units", time_units(k.epoch));
+    f.set_attribute("/time", "long_name", std::string("sample time"));
+    f.set_attribute("/time", "standard_name", std::string("time"));
     f.close();
   }
   out.commit();

@@ -1,7 +1,8 @@
 #pragma once
 // The Kalman smoother's result file (docs/formats.md): /time, /kalman/mean (N x 3),
 // /kalman/cov (N x 3 x 3), /kalman/mines/mean (K x 3), /kalman/mines/cov (K x 3 x 3),
-// and attributes (timings, options, containment on simulated missions).
+// and attributes (timings, options, containment on simulated missions, the sensor model
+// under /model, the origin, provenance and units: io/files/provenance.h).
 
 #include <cstdint>
 #include <map>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "solver/kalman/kalman_smoother.h"
+#include "solver/mission/mission.h"
 
 namespace gesmi::io {
 
@@ -20,6 +22,8 @@ struct KalmanFile {
   std::map<std::string, double> timings_ms;
   double containment_trajectory = 0.0, containment_mines = 0.0;  // NaN without truth
   std::optional<std::int64_t> epoch;  // the mission's UTC epoch of t = 0, when it has one
+  GeoOrigin origin;                   // the mission's local frame origin (WGS84)
+  SensorModel model;                  // the bounds the noise variances come from
 };
 
 void write_kalman_result(const KalmanFile& file, const std::string& path);

@@ -8,6 +8,7 @@
 #include "io/format_error.h"
 #include "io/geodesy.h"
 #include "io/files/model_attributes.h"
+#include "io/files/provenance.h"
 #include "io/files/sensor_model_yaml.h"
 #include "io/hdf5/h5_file.h"
 #include "io/hdf5/h5_format.h"
@@ -26,6 +27,36 @@ constexpr const char* kFormat = "gesmi-mission";
 constexpr H5FormatVersions kVersions{.current = 3, .oldest = 1, .when_absent = 0};
 
 std::string half_width_dataset(const NavChannel& c) { return "/nav/half_widths/" + std::string(c.name); }
+
+// Units (UDUNITS, as CF writes them; per column where columns differ) of the mission's
+// datasets; /nav/time's follow the epoch (provenance.h).
+constexpr DatasetUnits kMissionUnits[] = {
+    {"/nav/attitude", "rad, rad, rad", "roll, pitch, heading (from true north, clockwise)"},
+    {"/nav/velocity", "m s-1, m s-1, m s-1", "DVL velocity in the body frame: forward, starboard, down"},
+    {"/nav/altitude", "m", "DVL altitude above the sea floor"},
+    {"/nav/depth", "m", "depth (down positive)"},
+    {"/nav/half_widths/roll", "rad", "bound of the roll error"},
+    {"/nav/half_widths/pitch", "rad", "bound of the pitch error"},
+    {"/nav/half_widths/heading", "rad", "bound of the heading error"},
+    {"/nav/half_widths/vx", "m s-1", "bound of the forward velocity error"},
+    {"/nav/half_widths/vy", "m s-1", "bound of the starboard velocity error"},
+    {"/nav/half_widths/vz", "m s-1", "bound of the down velocity error"},
+    {"/nav/half_widths/altitude", "m", "bound of the altitude error"},
+    {"/nav/half_widths/depth", "m", "bound of the depth error"},
+    {"/gps/time", "s", "GPS fix time"},
+    {"/gps/lonlat", "degrees_east, degrees_north", "GPS fix longitude, latitude (WGS84)"},
+    {"/gps/halfwidth", "m, m", "bound of each fix's north and east errors"},
+    {"/marks/time", "s", "sonar mark time"},
+    {"/marks/mine", "1", "mine number of the mark (-1: not associated)"},
+    {"/marks/range", "m", "measured slant range"},
+    {"/marks/side", "1", "sonar side: +1 starboard, -1 port"},
+    {"/truth/position", "m, m, m", "true position: north, east, down (local frame)"},
+    {"/truth/mines", "m, m, m", "true mine positions: north, east, down (local frame)"},
+    {"/truth/missed_marks", "s, 1, m", "detections the simulator dropped: time, mine, true range"},
+    {"/truth/marks_outlier", "1", "1 for a mark corrupted by the simulator"},
+    {"/truth/marks_mine", "1", "the mine each mark really is (-1: an operator's mark)"},
+    {"/truth/gps_outlier", "1", "1 for a fix corrupted by the simulator"},
+};
 
 std::string row_text(std::size_t row) { return "row " + std::to_string(row); }
 
@@ -305,6 +336,12 @@ void write_mission(const Mission& m, const std::string& path) {
     for (const auto& [name, member] : conversion_margin_attributes())
       if (m.conversion_margins.*member != 0.0) f.set_attribute("/", name, m.conversion_margins.*member);
     write_model_attributes(f, "/model", m.model);
+    f.set_attribute("/", "datum", std::string("WGS84"));
+    write_provenance(f, "trajectory");
+    write_units(f, kMissionUnits);
+    f.set_attribute("/nav/time", "units", time_units(m.epoch));
+    f.set_attribute("/nav/time", "long_name", std::string("sample time"));
+    f.set_attribute("/nav/time", "standard_name", std::string("time"));
     f.close();
   }
   out.commit();

@@ -9,6 +9,7 @@
 #include "io/files/mission_digest.h"
 #include "io/io_version.h"
 #include "io/files/model_attributes.h"
+#include "io/files/provenance.h"
 #include "io/time/utc_time.h"
 #include "io/hdf5/h5_digest.h"
 #include "io/hdf5/h5_file.h"
@@ -34,6 +35,27 @@ const char* const kDatasets[] = {"/time",          "/tube/lower",       "/tube/u
                                  "/marks/side",     "/gps/outlier"};
 
 constexpr const char* kDatum = "WGS84";
+
+// Units of the result's datasets (provenance.h); /time's follow the epoch.
+constexpr DatasetUnits kResultUnits[] = {
+    {"/tube/lower", "m, m, m", "lower bounds of the position: north, east, down (local frame)"},
+    {"/tube/upper", "m, m, m", "upper bounds of the position: north, east, down (local frame)"},
+    {"/increments/lower", "m, m, m", "lower bounds of the displacement p(k+1) - p(k): north, east, down"},
+    {"/increments/upper", "m, m, m", "upper bounds of the displacement p(k+1) - p(k): north, east, down"},
+    {"/mines/lower", "m, m, m", "lower bounds of the mine positions: north, east, down"},
+    {"/mines/upper", "m, m, m", "upper bounds of the mine positions: north, east, down"},
+    {"/waterfall/step", "1", "sample of a feasible waterfall cell"},
+    {"/waterfall/mine", "1", "mine of a feasible waterfall cell"},
+    {"/waterfall/lower", "m", "smallest slant range at which the mine can appear"},
+    {"/waterfall/upper", "m", "largest slant range at which the mine can appear"},
+    {"/marks/candidates", "1", "1 where the mine is still a possible association of the mark"},
+    {"/marks/outlier", "1", "1 when every tolerated-outlier hypothesis removes the mark"},
+    {"/marks/time", "s", "sonar mark time"},
+    {"/marks/range", "m", "measured slant range"},
+    {"/marks/mine", "1", "mine number of the mark (-1: not associated)"},
+    {"/marks/side", "1", "sonar side: +1 starboard, -1 port"},
+    {"/gps/outlier", "1", "1 when every tolerated-outlier hypothesis removes the fix"},
+};
 
 bool format_3_only(std::string_view name) { return name == "/waterfall/step" || name == "/waterfall/mine"; }
 
@@ -237,6 +259,12 @@ void write_result(const SolveResult& r, const std::string& path) {
     std::vector<std::pair<std::string, std::string>> digested = fields;
     for (const char* dataset : kDatasets) digested.emplace_back(dataset, *f.string_attribute(dataset, "sha256"));
     f.set_attribute("/", "sha256", digest_of_fields(digested));
+    // Informative, outside the digests: how the file was made, and its units.
+    write_provenance(f, "trajectory");
+    write_units(f, kResultUnits);
+    f.set_attribute("/time", "units", time_units(r.epoch));
+    f.set_attribute("/time", "long_name", std::string("sample time"));
+    f.set_attribute("/time", "standard_name", std::string("time"));
     f.close();
   }
   out.commit();

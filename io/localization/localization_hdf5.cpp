@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "io/files/provenance.h"
 #include "io/output/atomic_output.h"
 #include "io/hdf5/h5_file.h"
 
@@ -22,6 +23,49 @@ void write_paving(H5File& file, const std::string& group, const Paving& paving, 
 }
 
 }  // namespace
+
+constexpr DatasetUnits kLocalizationUnits[] = {
+    {"/inner/boxes", "m, m, m, m, rad, rad", "inner boxes: x_lo, x_hi, y_lo, y_hi, theta_lo, theta_hi"},
+    {"/inner/component", "1", "hypothesis (component) of each inner box, from 1"},
+    {"/boundary/boxes", "m, m, m, m, rad, rad", "boundary boxes: x_lo, x_hi, y_lo, y_hi, theta_lo, theta_hi"},
+    {"/boundary/component", "1", "hypothesis (component) of each boundary box, from 1 (0: none)"},
+    {"/components/hull", "m, m, m, m, rad, rad", "hull of each hypothesis: x_lo, x_hi, y_lo, y_hi, theta_lo, theta_hi"},
+    {"/components/inner_boxes", "1", "inner boxes of each hypothesis"},
+    {"/components/boundary_boxes", "1", "boundary boxes of each hypothesis"},
+    {"/components/holds_truth", "1", "1 when the hypothesis holds the scenario's true pose"},
+    {"/components/outliers_determined", "1", "1 when the outlier set was read at a point with exactly q failures"},
+    {"/components/outliers", "1", "1 where the datum (ranges first, then bearings) is an outlier of the hypothesis"},
+    {"/data/range_sensor", "1", "range sensor of each range measurement"},
+    {"/data/range", "m", "measured range d (feasible: [d (1 - precision), d (1 + precision)])"},
+    {"/data/range_precision", "1", "relative precision of each range measurement's sensor"},
+    {"/data/bearing_sensor", "1", "bearing sensor of each bearing measurement"},
+    {"/data/bearing", "rad", "measured bearing in the sensor frame"},
+    {"/data/bearing_precision", "rad", "half-width of each bearing measurement's sensor"},
+};
+
+// The data and the sensors' precisions the pavings were computed from.
+void write_data(H5File& file, const LocalizationProblem& p) {
+  std::vector<std::int32_t> range_sensor, bearing_sensor;
+  std::vector<double> range, range_precision, bearing, bearing_precision;
+  for (const RangeMeasurement& m : p.ranges) {
+    range_sensor.push_back(static_cast<std::int32_t>(m.sensor));
+    range.push_back(m.range);
+    range_precision.push_back(p.range_sensors[m.sensor].precision);
+  }
+  for (const BearingMeasurement& m : p.bearings) {
+    bearing_sensor.push_back(static_cast<std::int32_t>(m.sensor));
+    bearing.push_back(m.bearing);
+    bearing_precision.push_back(p.bearing_sensors[m.sensor].precision);
+  }
+  file.write("/data/range_sensor", range_sensor, range_sensor.size());
+  file.write("/data/range", range, range.size());
+  file.write("/data/range_precision", range_precision, range_precision.size());
+  file.write("/data/bearing_sensor", bearing_sensor, bearing_sensor.size());
+  file.write("/data/bearing", bearing, bearing.size());
+  file.write("/data/bearing_precision", bearing_precision, bearing_precision.size());
+  file.set_attribute("/data", "epsilon", p.epsilon);
+  file.set_attribute("/data", "theta_scale", p.theta_scale);
+}
 
 void write_localization_hdf5(const std::string& path, const LocalizationProblem& p, const LocalizationResult& r) {
   std::vector<std::int32_t> inner(r.paving.inner.size(), 0), boundary(r.paving.boundary.size(), 0);
@@ -56,6 +100,9 @@ void write_localization_hdf5(const std::string& path, const LocalizationProblem&
   file.set_attribute("/", "q", static_cast<std::int64_t>(r.q));
   file.set_attribute("/", "found", static_cast<std::int64_t>(r.found));
   file.set_attribute("/", "seconds", r.seconds);
+  write_data(file, p);
+  write_provenance(file);
+  write_units(file, kLocalizationUnits);
   file.close();
   out.commit();
 }

@@ -50,6 +50,14 @@ OutputSet::~OutputSet() {
 
 OutputSet* OutputSet::active() { return innermost(); }
 
+std::vector<std::string> OutputSet::open_inputs() {
+  std::vector<std::string> inputs;
+  for (const OutputSet* set = innermost(); set; set = set->outer_)
+    for (const std::string& path : set->inputs_)
+      if (std::find(inputs.begin(), inputs.end(), path) == inputs.end()) inputs.push_back(path);
+  return inputs;
+}
+
 void OutputSet::check(const std::string& path) const {
   check_writable_target(path);
   for (const std::string& input : inputs_)

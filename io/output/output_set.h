@@ -50,6 +50,9 @@ class OutputSet {
 
   /// The innermost open set, or nullptr (for AtomicOutput).
   static OutputSet* active();
+  /// The inputs of every open set, innermost first, each once: the files the
+  /// outputs being written were made from (their provenance, io/files/provenance.h).
+  static std::vector<std::string> open_inputs();
   /// Takes a finished temporary file (AtomicOutput::commit while this set is open).
   void adopt(std::string temp_path, std::string final_path, int slot);
 

@@ -15,7 +15,9 @@ def datasets(path):
     out = {}
     with h5py.File(path, "r") as f:
         f.visititems(lambda name, obj: out.__setitem__(name, obj[()]) if isinstance(obj, h5py.Dataset) else None)
-        attrs = {k: v for k, v in f.attrs.items() if not k.startswith("timing_")}
+        # Timings and how the file was made (command line, creation time) differ by run.
+        attrs = {k: v for k, v in f.attrs.items()
+                 if not k.startswith("timing_") and k not in ("command_line", "created_utc", "history")}
     return out, attrs
 
 

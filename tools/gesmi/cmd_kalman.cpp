@@ -65,6 +65,8 @@ int run_kalman(std::span<const std::string> args) {
   file.containment_mines = c.mines;
   file.time = mission.time;
   file.epoch = mission.epoch;
+  file.origin = mission.origin;
+  file.model = mission.model;
   file.options = o;
   start = Clock::now();
   progress.update(-1.0, "writing " + output);

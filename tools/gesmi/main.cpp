@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "io/format_error.h"
+#include "io/files/provenance.h"
 #include "io/io_version.h"
 #include "io/text/message_text.h"
 #include "tools/gesmi/command.h"
@@ -63,6 +64,7 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
   const std::string who = "gesmi " + args[0];
+  gesmi::io::set_command_line(args);  // recorded in every file this run writes
   try {
     return found->run(std::span<const std::string>(args).subspan(1));
   } catch (const UsageError& e) {
