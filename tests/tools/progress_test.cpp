@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdio>
 #include <string>
+#include <tuple>
 
 #include "tests/support/paths.h"
 #include "tests/support/run_command.h"
@@ -47,6 +48,31 @@ TEST(Progress, ALongSolveShowsItsStagesOnATerminalAndClearsTheLine) {
   ASSERT_EQ(piped.exit_code, 0) << piped.err;
   EXPECT_EQ(piped.err.find('\r'), std::string::npos);
   EXPECT_EQ(piped.out.find('\r'), std::string::npos);
+}
+
+// Simulate, export and import of 10^6 samples (about a second each) on a terminal:
+// each shows its phase and clears the line before its summary.
+TEST(Progress, SimulateExportAndImportShowTheirPhases) {
+  const std::string dir = temp_folder("progress-io");
+  const std::string gesmi = std::string(GESMI_BIN_DIR) + "/gesmi";
+  const auto expect_phase = [](const std::string& out, const std::string& label, const std::string& phase) {
+    EXPECT_NE(out.find("\r\033[K" + label), std::string::npos) << out;
+    EXPECT_NE(out.find(phase), std::string::npos) << out;
+    const std::size_t last = out.rfind(label);
+    ASSERT_NE(last, std::string::npos);
+    EXPECT_NE(out.find("\r\033[K", last), std::string::npos) << out.substr(last);
+    EXPECT_NE(out.find("wrote "), std::string::npos) << out;
+  };
+  auto [code, out] = on_terminal(gesmi + " simulate --seed 2 --duration 100000 -o " + dir + "/m.h5");
+  ASSERT_EQ(code, 0) << out;
+  expect_phase(out, "gesmi simulate: ", "simulating 1000000 samples");
+  std::tie(code, out) = on_terminal(gesmi + " export " + dir + "/m.h5 -o " + dir + "/csv");
+  ASSERT_EQ(code, 0) << out;
+  expect_phase(out, "gesmi export: ", "writing " + dir + "/csv");
+  std::tie(code, out) = on_terminal("cd " + dir + "/csv && " + gesmi + " import nav nav.csv --gps gps.csv --marks marks.csv "
+                                    "--config model.yaml --mines 6 -o " + dir + "/back.h5");
+  ASSERT_EQ(code, 0) << out;
+  expect_phase(out, "gesmi import: ", "reading nav.csv");
 }
 
 TEST(Progress, AQuickCommandDrawsNothingOnATerminal) {

@@ -17,6 +17,7 @@
 #include "io/output/output_set.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/command_report.h"
+#include "tools/gesmi/progress.h"
 #include "tools/gesmi/inconsistent_gate.h"
 #include "tools/gesmi/input_files.h"
 
@@ -48,6 +49,8 @@ bool report_mission_export(const po::variables_map& v, const std::string& format
 int export_result(const po::variables_map& v, const std::string& format, const std::string& output,
                   io::OutputSet& outputs) {
   const std::string path = v["file"].as<std::string>();
+  Progress progress("gesmi export:");  // on a terminal, for long runs only (progress.h)
+  progress.update(-1.0, "reading " + path);
   const io::SolveResult r = io::read_result(path, {.tube = format != "mines-csv", .waterfall = false});
   if (!accept_result_status(v, "export", path, r.solution.report.consistent)) return kExitInconsistent;
   io::export_origin(r, path);
@@ -59,10 +62,12 @@ int export_result(const po::variables_map& v, const std::string& format, const s
       throw UsageError("--mission: " + v["mission"].as<std::string>() + " is not the mission " + path +
                        " was solved from (its navigation digest differs)");
   }
+  progress.update(-1.0, "writing " + output);
   if (format == "tube-csv") io::write_tube_csv(r, output);
   if (format == "mines-csv") io::write_mines_csv(r, output);
   if (format == "geojson") io::write_geojson(r, mission ? &*mission : nullptr, output);
   outputs.commit();
+  progress.finish();
   CommandReport report("export", v);
   if (report.enabled()) {
     report.inputs(v, {"file", "mission"});
@@ -115,11 +120,15 @@ int run_export(std::span<const std::string> args) {
     io::check_export_folder(output);
   else
     outputs.check(output);
+  Progress progress("gesmi export:");
+  progress.update(-1.0, "reading " + v["file"].as<std::string>());
   const Mission m = io::read_mission(v["file"].as<std::string>());
+  progress.update(-1.0, "writing " + output);
   if (format == "csv") {
     outputs.prepare_folder(output);
     io::export_mission_csv(m, output);
     outputs.commit();
+    progress.finish();
     if (report_mission_export(v, format, output, m)) return kExitOk;
     std::printf("wrote %s/: nav.csv (%zu rows), gps.csv (%zu), marks.csv (%zu)%s%s, model.yaml, import-command.txt\n",
                 output.c_str(), m.size(), m.gps_time.size(), m.mark_count(), m.has_truth() ? ", truth.csv" : "",
@@ -151,6 +160,7 @@ int run_export(std::span<const std::string> args) {
     outputs.prepare_folder(output);
     io::export_mission_logger(m, v["file"].as<std::string>(), output, o);
     outputs.commit();
+    progress.finish();
     if (report_mission_export(v, format, output, m)) return kExitOk;
     std::printf("wrote %s/: log.csv (%zu rows), map.yaml, gps.nmea (%zu fixes), marks.csv (%zu), marks_map.yaml, model.yaml%s%s, "
                 "import-command.txt\n",
@@ -160,6 +170,7 @@ int run_export(std::span<const std::string> args) {
   }
   io::export_gesmi_txt(m, v["file"].as<std::string>(), output);
   outputs.commit();
+  progress.finish();
   if (report_mission_export(v, format, output, m)) return kExitOk;
   std::printf("wrote %s: %zu rows, %zu position fixes (marks are not part of the GESMI text format)\n", output.c_str(),
               m.size(), m.gps_time.size());

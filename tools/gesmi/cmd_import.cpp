@@ -12,6 +12,7 @@
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/command_report.h"
+#include "tools/gesmi/progress.h"
 #include "io/report/report_json.h"
 #include "tools/gesmi/skip_existing.h"
 
@@ -104,10 +105,14 @@ int import_marks(std::span<const std::string> args) {
   outputs.check(output);
   const std::optional<int> mines = parse_mines(v);
   if (skipped_as_existing(v, "import", {output})) return kExitOk;
+  Progress progress("gesmi import:");
+  progress.update(-1.0, "reading " + v["into"].as<std::string>() + " and " + v["marks"].as<std::string>());
   Mission m = io::read_mission(v["into"].as<std::string>());
   io::import_marks(m, v["marks"].as<std::string>(), mines, optional_path(v, "map"));
+  progress.update(-1.0, "writing " + output);
   io::write_mission(m, output);
   outputs.commit();
+  progress.finish();
   return finish_import(v, "marks", {"marks", "into", "map"}, m, output);
 }
 
@@ -157,9 +162,13 @@ int import_nav(std::span<const std::string> args) {
   inputs.mines = parse_mines(v);
   if (skipped_as_existing(v, "import", {output})) return kExitOk;
   std::vector<std::string> notes;
+  Progress progress("gesmi import:");
+  progress.update(-1.0, "reading " + v["nav"].as<std::string>() + " and its fixes and marks");
   const Mission m = io::import_nav(v["nav"].as<std::string>(), inputs, &notes);
+  progress.update(-1.0, "writing " + output);
   io::write_mission(m, output);
   outputs.commit();
+  progress.finish();
   return finish_import(v, "nav", {"nav", "map", "gps", "marks", "marks-map", "config", "truth", "truth-mines"}, m, output,
                        notes);
 }
@@ -194,9 +203,13 @@ int import_gesmi_txt(std::span<const std::string> args) {
   if (v.count("origin")) inputs.origin = parse_origin(v["origin"].as<std::string>());
   inputs.mines = parse_mines(v);
   if (skipped_as_existing(v, "import", {output})) return kExitOk;
+  Progress progress("gesmi import:");
+  progress.update(-1.0, "reading " + v["log"].as<std::string>());
   const Mission m = io::import_gesmi_txt(v["log"].as<std::string>(), xy == "fixes" ? io::GesmiXy::fixes : io::GesmiXy::truth, inputs);
+  progress.update(-1.0, "writing " + output);
   io::write_mission(m, output);
   outputs.commit();
+  progress.finish();
   return finish_import(v, "gesmi-txt", {"log", "marks", "config"}, m, output);
 }
 

@@ -15,6 +15,7 @@
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/command_report.h"
+#include "tools/gesmi/progress.h"
 #include "io/report/report_json.h"
 #include "tools/gesmi/skip_existing.h"
 
@@ -102,10 +103,17 @@ int run_localize(std::span<const std::string> args) {
   io::OutputSet outputs(input_files(values, {"scenario"}));
   io::OutputSet::check_folder(folder);  // before the search, which can be long
   if (skipped_as_existing(values, "localize", io::localization_output_files(folder))) return kExitOk;
-  const LocalizationResult result = localize(problem);
+  Progress progress("gesmi localize:");  // on a terminal, for long searches only (progress.h)
+  progress.update(-1.0, "searching");
+  const LocalizationResult result = localize(problem, [&](const SiviaProgress& p) {
+    progress.update(-1.0, "searching: " + std::to_string(p.boxes_visited) + " boxes, " + std::to_string(p.inner_boxes) +
+                              " inner, " + std::to_string(p.boundary_boxes) + " boundary");
+  });
+  progress.update(-1.0, "writing " + folder);
   outputs.prepare_folder(folder);
   const std::vector<std::string> written = io::write_localization_outputs(folder, problem, result);
   outputs.commit();
+  progress.finish();
   const int exit_code = result.found ? kExitOk : kExitInconsistent;
   CommandReport report("localize", values);
   if (report.enabled()) {

@@ -12,6 +12,7 @@
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/command_report.h"
+#include "tools/gesmi/progress.h"
 #include "io/report/report_json.h"
 #include "tools/gesmi/skip_existing.h"
 
@@ -64,13 +65,17 @@ int run_simulate(std::span<const std::string> args) {
   outputs.check(output);
   if (skipped_as_existing(v, "simulate", {output})) return kExitOk;
 
+  Progress progress("gesmi simulate:");  // on a terminal, for long runs only (progress.h)
+  progress.update(-1.0, "simulating " + std::to_string(static_cast<long long>(o.duration * o.rate)) + " samples");
   SensorModel model;
   if (v.count("config")) io::merge_sensor_model_yaml(v["config"].as<std::string>(), model);
   Mission mission = simulate_mission(o, model);
   mission.origin = {48.212920614, -4.458227931};  // the reference start fix
   io::set_geodetic_gps(mission);
+  progress.update(-1.0, "writing " + output);
   io::write_mission(mission, output);
   outputs.commit();
+  progress.finish();
   CommandReport report("simulate", v);
   if (report.enabled()) {
     report.inputs(v, {"config"});
