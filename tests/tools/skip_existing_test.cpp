@@ -56,6 +56,26 @@ TEST(SkipExisting, EveryWritingCommandSkipsWhenItsOutputsExist) {
     files.push_back(d + "/loc/" + f);
   expect_skipped({"localize", source_dir() + "/missions/localization/triangle_two_hypotheses.yaml", "-o", d + "/loc"},
                  files);
+  expect_skipped({"export", result, "--format", "tube-csv", "-o", d + "/t.csv"}, {d + "/t.csv"});
+  expect_skipped({"export", mission, "--format", "gesmi-txt", "-o", d + "/m.txt"}, {d + "/m.txt"});
+  // A folder export is renamed into place whole: its import-command.txt stands for it.
+  fs::create_directories(d + "/csv");
+  expect_skipped({"export", mission, "-o", d + "/csv"}, {d + "/csv/import-command.txt"});
+  fs::create_directories(d + "/demo");
+  files.clear();
+  for (const char* f : {"mission.h5", "result.h5", "result.envelope.png", "waterfall.png", "result.mines.csv", "result.geojson"})
+    files.push_back(d + "/demo/" + f);
+  expect_skipped({"demo", "-o", d + "/demo"}, files);
+}
+
+TEST(SkipExisting, AFolderExportWithoutItsLastFileIsNotSkipped) {
+  const std::string d = temp_folder("skip-export");
+  ASSERT_EQ(run_gesmi({"simulate", "--seed", "3", "--duration", "60", "-o", d + "/m.h5"}).exit_code, 0);
+  fs::create_directories(d + "/csv");
+  put(d + "/csv/nav.csv", "placeholder");
+  const CommandResult r = run_gesmi({"export", d + "/m.h5", "-o", d + "/csv", "--skip-existing"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;  // not skipped: the folder is not empty, as without the option
+  EXPECT_NE(r.err.find("not empty"), std::string::npos) << r.err;
 }
 
 TEST(SkipExisting, WhatWouldBeAnErrorStaysOne) {

@@ -11,6 +11,7 @@
 #include "io/files/result_file.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/command_report.h"
+#include "tools/gesmi/skip_existing.h"
 
 namespace gesmi::cli {
 namespace {
@@ -38,11 +39,16 @@ int run_demo(std::span<const std::string> args) {
   options.add_options()("output,o", po::value<std::string>()->default_value("gesmi-demo"), "folder for the demo files")(
       "seed", po::value<std::string>()->default_value("1"), "simulation seed");
   options.add_options()("json", "print each step's JSON report, then the demo's own, one per line (docs/reports.md)");
+  add_skip_existing(options);
   po::variables_map v;
-  if (!parse_options(args, options, {}, v, "gesmi demo [-o DIR] [--seed S] [--json]")) return kExitOk;
+  if (!parse_options(args, options, {}, v, "gesmi demo [-o DIR] [--seed S] [--json] [--skip-existing]")) return kExitOk;
   const std::string dir = v["output"].as<std::string>();
   const long long seed = parse_integer("--seed", v["seed"].as<std::string>());
   if (seed < 0) throw UsageError("--seed: must be >= 0");
+  std::vector<std::string> files;
+  for (const char* name : kDemoFiles) files.push_back((std::filesystem::path(dir) / name).string());
+  io::OutputSet::check_folder(dir);
+  if (skipped_as_existing(v, "demo", files)) return kExitOk;
   // One set over the whole demo: a step that fails removes what the earlier ones wrote.
   io::OutputSet outputs;
   outputs.prepare_folder(dir);
@@ -67,7 +73,7 @@ int run_demo(std::span<const std::string> args) {
   const MissionSolution& r = file.solution;
   if (report.enabled()) {
     outputs.commit();
-    for (const char* name : kDemoFiles) report.output(dir + "/" + name);
+    report.outputs(files);
     report.timings({{"demo", seconds * 1000.0}});
     report["status"] = r.report.consistent ? "consistent" : "inconsistent";
     return report.finish(solved);

@@ -2,6 +2,7 @@
 // or to a GESMI text log; a result as CSV (tube, mine boxes) or GeoJSON for GIS.
 
 #include <cstdio>
+#include <filesystem>
 
 #include "io/output/atomic_output.h"
 #include "io/exports/export_csv.h"
@@ -18,6 +19,7 @@
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/command_report.h"
 #include "tools/gesmi/progress.h"
+#include "tools/gesmi/skip_existing.h"
 #include "tools/gesmi/inconsistent_gate.h"
 #include "tools/gesmi/input_files.h"
 
@@ -101,12 +103,13 @@ int run_export(std::span<const std::string> args) {
       ("dvl-gap", po::value<std::string>(), "logger: no DVL reading from FROM to TO s (FROM:TO)");
   add_show_inconsistent(options);
   add_json_option(options);
+  add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("file", 1);
   po::variables_map v;
   if (!parse_options(args, options, positional, v, "gesmi export MISSION.h5 -o DIR [--format csv|logger|gesmi-txt] [logger options]\n"
                      "       gesmi export RESULT.h5 -o FILE --format tube-csv|mines-csv|geojson [--mission MISSION.h5] "
-                     "[--show-inconsistent]"))
+                     "[--show-inconsistent] [--skip-existing]"))
     return kExitOk;
   const std::string format = v["format"].as<std::string>(), output = v["output"].as<std::string>();
   if (format != "csv" && format != "gesmi-txt" && format != "logger" && !is_result_format(format))
@@ -114,12 +117,18 @@ int run_export(std::span<const std::string> args) {
   io::OutputSet outputs(input_files(v, {"file", "mission"}));
   if (is_result_format(format)) {
     outputs.check(output);
+    if (skipped_as_existing(v, "export", {output})) return kExitOk;
     return export_result(v, format, output, outputs);
   }
-  if (format == "csv" || format == "logger")
+  if (format == "csv" || format == "logger") {
+    // A folder export is renamed into place whole, so its last file stands for it.
+    const std::string last = (std::filesystem::path(output) / "import-command.txt").string();
+    if (skipped_as_existing(v, "export", {last})) return kExitOk;
     io::check_export_folder(output);
-  else
+  } else {
     outputs.check(output);
+    if (skipped_as_existing(v, "export", {output})) return kExitOk;
+  }
   Progress progress("gesmi export:");
   progress.update(-1.0, "reading " + v["file"].as<std::string>());
   const Mission m = io::read_mission(v["file"].as<std::string>());
