@@ -25,19 +25,28 @@ struct CellGrid {
 };
 
 // Fills a cell of each 2x2 block whose filled cells touch only at a corner: the traced
-// rings then never touch themselves or each other. Filling only adds area (outward).
+// rings then never touch themselves or each other. Filling only adds area (outward). One
+// scan of the grid; a fill can only make new such blocks among the four around the
+// filled cell, which a worklist re-checks.
 void join_corner_contacts(CellGrid& g) {
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (std::size_t r = 0; r + 1 < g.rows; ++r)
-      for (std::size_t c = 0; c + 1 < g.columns; ++c) {
-        const bool a = g.at(r, c), b = g.at(r, c + 1), d = g.at(r + 1, c), e = g.at(r + 1, c + 1);
-        if (a == e && b == d && a != b) {
-          if (a) g.at(r, c + 1) = 1; else g.at(r, c) = 1;
-          changed = true;
-        }
+  std::vector<std::pair<std::size_t, std::size_t>> blocks;  // lower-left cells of blocks to re-check
+  const auto fix = [&](std::size_t r, std::size_t c) {
+    const bool a = g.at(r, c), b = g.at(r, c + 1), d = g.at(r + 1, c), e = g.at(r + 1, c + 1);
+    if (!(a == e && b == d && a != b)) return;
+    const std::size_t fr = r, fc = a ? c + 1 : c;  // the empty cell of the block's lower row
+    g.at(fr, fc) = 1;
+    for (std::size_t br = fr > 0 ? fr - 1 : 0; br <= fr && br + 1 < g.rows; ++br)
+      for (std::size_t bc = fc > 0 ? fc - 1 : 0; bc <= fc && bc + 1 < g.columns; ++bc) blocks.emplace_back(br, bc);
+  };
+  for (std::size_t r = 0; r + 1 < g.rows; ++r)
+    for (std::size_t c = 0; c + 1 < g.columns; ++c) {
+      fix(r, c);
+      while (!blocks.empty()) {
+        const auto [br, bc] = blocks.back();
+        blocks.pop_back();
+        fix(br, bc);
       }
-  }
+    }
 }
 
 double signed_area(const OutlineRing& ring) {

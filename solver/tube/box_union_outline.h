@@ -33,6 +33,6 @@ struct BoxOutline {
 /// Outline of the union of the boxes x[k] x y[k] widened by pad (>= 0). The grid holds
 /// at most about max_cells cells, and its cells are at least min_cell wide.
 BoxOutline outline_of_boxes(std::span<const Interval> x, std::span<const Interval> y, double pad,
-                            double min_cell = 0.25, std::size_t max_cells = std::size_t{1} << 24);
+                            double min_cell = 0.25, std::size_t max_cells = std::size_t{1} << 22);
 
 }  // namespace gesmi
