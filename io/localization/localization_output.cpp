@@ -6,6 +6,7 @@
 
 #include "io/output/atomic_output.h"
 #include "io/format_error.h"
+#include "io/imports/csv_number.h"
 #include "io/localization/localization_hdf5.h"
 #include "io/plot/localization_picture.h"
 
@@ -101,8 +102,9 @@ std::string paving_csv(const Paving& paving, const std::vector<int>& component_o
   std::string s = "component,x_lo,x_hi,y_lo,y_hi,theta_lo_rad,theta_hi_rad\n";
   for (std::size_t i = 0; i < paving.size(); ++i) {
     const auto b = paving.box(i);
-    s += format("%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", component_of_box[i], b[0].lo(), b[0].hi(), b[1].lo(), b[1].hi(),
-                b[2].lo(), b[2].hi());
+    s += std::to_string(component_of_box[i]);
+    for (int d = 0; d < 3; ++d) s += "," + format_number(b[d].lo()) + "," + format_number(b[d].hi());  // exact, shortest
+    s += "\n";
   }
   return s;
 }
@@ -114,9 +116,9 @@ std::string components_csv(const LocalizationProblem& p, const LocalizationResul
   for (std::size_t k = 0; k < r.hypotheses.size(); ++k) {
     const LocalizationHypothesis& h = r.hypotheses[k];
     const Box& b = h.component.hull;
-    s += format("%zu,%zu,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.9g,%.9g,", k + 1, h.component.inner.size(),
-                h.component.boundary.size(), b[0].lo(), b[0].hi(), b[1].lo(), b[1].hi(), b[2].lo(), b[2].hi(),
-                h.component.inner_volume, h.component.boundary_volume);
+    s += format("%zu,%zu,%zu", k + 1, h.component.inner.size(), h.component.boundary.size());
+    for (int d = 0; d < 3; ++d) s += "," + format_number(b[d].lo()) + "," + format_number(b[d].hi());
+    s += "," + format_number(h.component.inner_volume) + "," + format_number(h.component.boundary_volume) + ",";
     s += "\"" + outlier_names(p, h) + "\"," + (h.outliers.determined ? "1" : "0") + ",\"" + association_text(p, h) + "\"," +
          (h.contains_truth ? "1" : "0") + "\n";
   }
