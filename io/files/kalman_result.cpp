@@ -36,6 +36,10 @@ void write_kalman_result(const KalmanFile& k, const std::string& path) {
     if (k.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*k.epoch));
     f.set_attribute("/", "noise_factor", k.options.noise_factor);
     f.set_attribute("/", "iterations", static_cast<std::int64_t>(r.iterations));
+    f.set_attribute("/", "max_iterations", static_cast<std::int64_t>(k.options.max_iterations));
+    f.set_attribute("/", "tolerance_m", k.options.tolerance);
+    f.set_attribute("/", "last_step_m", r.last_step);
+    f.set_attribute("/", "converged", static_cast<std::int64_t>(r.converged));
     f.set_attribute("/", "containment_3sigma_trajectory", k.containment_trajectory);
     f.set_attribute("/", "containment_3sigma_mines", k.containment_mines);
     for (const auto& [name, ms] : k.timings_ms) f.set_attribute("/", "timing_" + name + "_ms", ms);

@@ -114,7 +114,8 @@ void build_and_solve(const Mission& m, const SensorModel& model, std::span<const
 
 std::string KalmanOptions::validate() const {
   if (!(noise_factor > 0.0) || !std::isfinite(noise_factor)) return "the noise factor must be a positive number";
-  if (iterations < 1 || iterations > 20) return "iterations must be between 1 and 20";
+  if (max_iterations < 1 || max_iterations > 100) return "the iteration cap must be between 1 and 100";
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) return "the tolerance must be a finite number >= 0";
   return {};
 }
 
@@ -143,13 +144,25 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
   result.steps = n;
   result.mines = k_mines;
   ArrowheadChain chain(n, 3 * k_mines);  // one set of buffers for every linearisation
-  for (int it = 0; it < o.iterations; ++it) {
+  for (int it = 0; it < o.max_iterations; ++it) {
     build_and_solve(m, model, fixes, o, lin, chain);
     ++result.iterations;
-    for (std::size_t k = 0; k < n; ++k) lin.position[k] = chain.mean(k);
-    for (std::size_t i = 0; i < k_mines; ++i)
-      if (lin.mine_known[i]) lin.mine[i] = chain.static_mean().segment<3>(static_cast<Eigen::Index>(3 * i));
-    if (it + 1 < o.iterations) continue;
+    // The step: how far the new estimate moved any coordinate from the linearisation
+    // point (for a mine first placed in this pass, from where it was placed).
+    double step = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      step = std::max(step, (chain.mean(k) - lin.position[k]).cwiseAbs().maxCoeff());
+      lin.position[k] = chain.mean(k);
+    }
+    for (std::size_t i = 0; i < k_mines; ++i) {
+      if (!lin.mine_known[i]) continue;
+      const Vec3d mine = chain.static_mean().segment<3>(static_cast<Eigen::Index>(3 * i));
+      step = std::max(step, (mine - lin.mine[i]).cwiseAbs().maxCoeff());
+      lin.mine[i] = mine;
+    }
+    result.last_step = step;
+    result.converged = step <= o.tolerance;
+    if (!result.converged && it + 1 < o.max_iterations) continue;
     chain.release_workspace();  // before the result's arrays: the peak stays that of a solve
     result.mean.resize(3 * n);
     result.covariance.resize(9 * n);
@@ -171,6 +184,7 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
           result.mine_covariance[9 * i + static_cast<std::size_t>(3 * r + c)] = chain.static_covariance()(b + r, b + c);
       }
     }
+    break;
   }
   return result;
 }

@@ -12,6 +12,7 @@
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/progress.h"
 #include "tools/gesmi/skip_existing.h"
+#include "io/imports/csv_number.h"
 #include "tools/gesmi/command_report.h"
 #include "io/report/report_json.h"
 
@@ -30,19 +31,24 @@ int run_kalman(std::span<const std::string> args) {
       ("output,o", po::value<std::string>()->required(), "result file to write (HDF5)")
       ("config", po::value<std::string>(), "sensor bounds (YAML) overriding the mission's")
       ("noise-factor", po::value<std::string>()->default_value("1"), "variance = factor x bound^2 / 3")
-      ("iterations", po::value<std::string>()->default_value("2"), "linearisations of the range measurements");
+      ("max-iterations", po::value<std::string>()->default_value("20"),
+       "cap on the linearisations of the range measurements (1 to 100)")
+      ("tolerance", po::value<std::string>()->default_value("0.001"),
+       "converged when a linearisation moves no position or mine coordinate more (m)");
   add_json_option(options, true);
   add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("mission", 1);
   po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--json] [--skip-existing]"))
+  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--max-iterations N] [--tolerance T] [--json] [--skip-existing]"))
     return kExitOk;
   KalmanOptions o;
   o.noise_factor = parse_double("--noise-factor", v["noise-factor"].as<std::string>());
-  const long long iterations = parse_integer("--iterations", v["iterations"].as<std::string>());
-  if (iterations < 1 || iterations > 20) throw UsageError("--iterations: must be between 1 and 20");
-  o.iterations = static_cast<int>(iterations);
+  const long long cap = parse_integer("--max-iterations", v["max-iterations"].as<std::string>());
+  if (cap < 1 || cap > 100) throw UsageError("--max-iterations: must be between 1 and 100");
+  o.max_iterations = static_cast<int>(cap);
+  o.tolerance = parse_non_negative("--tolerance", v["tolerance"].as<std::string>());
+  if (!std::isfinite(o.tolerance)) throw UsageError("--tolerance: must be finite");
   if (const std::string why = o.validate(); !why.empty()) throw UsageError("--noise-factor: " + why);
   const std::string output = v["output"].as<std::string>();
   io::OutputSet outputs(input_files(v, {"mission", "config"}));
@@ -57,7 +63,8 @@ int run_kalman(std::span<const std::string> args) {
   if (v.count("config")) io::merge_model_config(mission, v["config"].as<std::string>());
   file.timings_ms["load"] = elapsed_ms(start);
   start = Clock::now();
-  progress.update(-1.0, "smoothing (" + std::to_string(o.iterations) + " linearisations)");
+  progress.update(-1.0, "smoothing (linearisations until no coordinate moves more than " + io::format_number(o.tolerance) +
+                            " m)");
   file.result = kalman_smooth(mission, mission.model, gps_fixes(mission), o);
   file.timings_ms["smooth"] = elapsed_ms(start);
   const Containment c = three_sigma_containment(file.result, mission);
@@ -74,6 +81,13 @@ int run_kalman(std::span<const std::string> args) {
   outputs.commit();
   file.timings_ms["write"] = elapsed_ms(start);
   progress.finish();
+  const KalmanResult& k = file.result;
+  if (!k.converged)
+    std::fprintf(stderr,
+                 "gesmi kalman: warning: not converged after %d linearisations (the last moved a coordinate by %s m, more "
+                 "than the tolerance %s m): raise --max-iterations, or --tolerance if the steps stall near 0.5 mm (the "
+                 "smoother's rounding floor)\n",
+                 k.iterations, io::format_number(k.last_step).c_str(), io::format_number(o.tolerance).c_str());
   CommandReport report("kalman", v);
   if (report.enabled()) {
     report.input("mission", v["mission"].as<std::string>());
@@ -83,9 +97,15 @@ int run_kalman(std::span<const std::string> args) {
     report["kalman"] = {{"steps", mission.size()},
                         {"mines", mission.mine_count},
                         {"containment_3sigma_trajectory", io::number_json(c.trajectory)},
-                        {"containment_3sigma_mines", io::number_json(c.mines)}};
+                        {"containment_3sigma_mines", io::number_json(c.mines)},
+                        {"iterations", file.result.iterations},
+                        {"last_step_m", io::number_json(file.result.last_step)},
+                        {"converged", file.result.converged},
+                        {"tolerance_m", o.tolerance}};
   } else {
-    std::printf("kalman smoother: %zu steps in %.1f ms, written to %s", mission.size(), file.timings_ms["smooth"], output.c_str());
+    std::printf("kalman smoother: %zu steps in %.1f ms, %s after %d linearisations (last step %.2g m), written to %s",
+                mission.size(), file.timings_ms["smooth"], k.converged ? "converged" : "NOT converged", k.iterations,
+                k.last_step, output.c_str());
     if (!std::isnan(c.trajectory))
       std::printf("; truth within 3 sigma: %.1f %% of steps, %.0f %% of mines", 100.0 * c.trajectory, 100.0 * c.mines);
     std::printf("\n");

@@ -27,20 +27,24 @@ void bind_kalman(py::module_& m) {
                                return py::array_t<double>({static_cast<py::ssize_t>(r.mines), py::ssize_t{3}, py::ssize_t{3}},
                                                           r.mine_covariance.data(), self);
                              })
-      .def_readonly("iterations", &KalmanResult::iterations);
+      .def_readonly("iterations", &KalmanResult::iterations)
+      .def_readonly("last_step", &KalmanResult::last_step)
+      .def_readonly("converged", &KalmanResult::converged);
   m.def(
       "kalman",
-      [](Mission& mission, double noise_factor, int iterations) {
+      [](Mission& mission, double noise_factor, int max_iterations, double tolerance) {
         io::validate_mission(mission, "mission");
         io::fill_local_gps(mission, "mission");
         KalmanOptions o;
         o.noise_factor = noise_factor;
-        o.iterations = iterations;
+        o.max_iterations = max_iterations;
+        o.tolerance = tolerance;
         if (const std::string why = o.validate(); !why.empty()) throw io::FormatError("kalman: " + why);
         py::gil_scoped_release release;
         return kalman_smooth(mission, mission.model, gps_fixes(mission), o);
       },
-      py::arg("mission"), py::arg("noise_factor") = 1.0, py::arg("iterations") = 2,
+      py::arg("mission"), py::arg("noise_factor") = 1.0, py::arg("max_iterations") = KalmanOptions{}.max_iterations,
+      py::arg("tolerance") = KalmanOptions{}.tolerance,
       "The Kalman smoother baseline (EKF + RTS, as `gesmi kalman`)");
   m.def(
       "three_sigma_containment",

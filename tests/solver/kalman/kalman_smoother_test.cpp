@@ -48,13 +48,56 @@ TEST(KalmanSmoother, ReportsItsContainmentOnSimulatedMissions) {
   }
 }
 
+// The linearisations go on until no coordinate moves more than the tolerance: on
+// worst-case data two (the old fixed count) are not enough, the converged estimate is
+// a fixed point (one more linearisation moves it by no more than the tolerance plus the
+// chain's rounding floor), and a cap reached is reported as not converged.
+TEST(KalmanSmoother, IteratesUntilTheStepIsBelowTheTolerance) {
+  SimulationOptions so;
+  so.seed = 1;
+  so.errors = SimulatedErrors::worst_case;
+  so.duration = 2400.0;
+  const Mission m = simulate_mission(so);
+  const auto fixes = gps_fixes(m);
+  const KalmanResult converged = kalman_smooth(m, m.model, fixes);
+  EXPECT_TRUE(converged.converged);
+  EXPECT_LE(converged.last_step, KalmanOptions{}.tolerance);
+  EXPECT_GT(converged.iterations, 2);
+  std::printf("worst case, 2400 s: converged after %d linearisations, last step %.2g m\n", converged.iterations,
+              converged.last_step);
+
+  KalmanOptions two;
+  two.max_iterations = 2;
+  const KalmanResult capped = kalman_smooth(m, m.model, fixes, two);
+  EXPECT_FALSE(capped.converged);
+  EXPECT_EQ(capped.iterations, 2);
+  EXPECT_GT(capped.last_step, two.tolerance);
+
+  KalmanOptions one_more;
+  one_more.max_iterations = converged.iterations + 1;
+  one_more.tolerance = 0.0;
+  const KalmanResult next = kalman_smooth(m, m.model, fixes, one_more);
+  double moved = 0.0, moved_from_capped = 0.0;
+  for (std::size_t i = 0; i < next.mean.size(); ++i) {
+    moved = std::max(moved, std::fabs(next.mean[i] - converged.mean[i]));
+    moved_from_capped = std::max(moved_from_capped, std::fabs(capped.mean[i] - converged.mean[i]));
+  }
+  EXPECT_LE(moved, KalmanOptions{}.tolerance + 1e-3);
+  EXPECT_GT(moved_from_capped, 0.01);  // two linearisations were centimetres or more away
+  std::printf("one more linearisation moved the estimate %.2g m; two linearisations were %.2g m away\n", moved,
+              moved_from_capped);
+}
+
 TEST(KalmanSmoother, ValidatesItsOptions) {
   KalmanOptions o;
   EXPECT_TRUE(o.validate().empty());
   o.noise_factor = 0.0;
   EXPECT_FALSE(o.validate().empty());
   o.noise_factor = 1.0;
-  o.iterations = 0;
+  o.max_iterations = 0;
+  EXPECT_FALSE(o.validate().empty());
+  o.max_iterations = 20;
+  o.tolerance = -1.0;
   EXPECT_FALSE(o.validate().empty());
 }
 
