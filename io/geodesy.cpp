@@ -102,10 +102,14 @@ void fill_local_gps(Mission& m, const std::string& source) {
     const double lon_m = m.model.gps_lon_deg * degree * radius * std::cos(m.gps_latitude[i] * degree);
     m.gps_north_halfwidth[i] = add_up(std::max(lat_m, m.model.gps_metres), kLocalFrameError);
     m.gps_east_halfwidth[i] = add_up(std::max(lon_m, m.model.gps_metres), kLocalFrameError);
-    // A bound given with the fix (a position from a text log) replaces the model's.
+    // A bound given with the fix (a position from a text log) replaces the model's,
+    // unless a --config set the model's GPS bounds: then the larger of the two holds.
     if (!m.gps_given_north_halfwidth.empty()) {
-      m.gps_north_halfwidth[i] = add_up(m.gps_given_north_halfwidth[i], kLocalFrameError);
-      m.gps_east_halfwidth[i] = add_up(m.gps_given_east_halfwidth[i], kLocalFrameError);
+      const double north = m.gps_given_north_halfwidth[i], east = m.gps_given_east_halfwidth[i];
+      m.gps_north_halfwidth[i] = m.gps_model_floor ? std::max(m.gps_north_halfwidth[i], add_up(north, kLocalFrameError))
+                                                   : add_up(north, kLocalFrameError);
+      m.gps_east_halfwidth[i] = m.gps_model_floor ? std::max(m.gps_east_halfwidth[i], add_up(east, kLocalFrameError))
+                                                  : add_up(east, kLocalFrameError);
     }
   }
   // The heading's margin holds anywhere in the frame's zone: the solver bounds it

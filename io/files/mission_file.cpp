@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "io/output/atomic_output.h"
 #include "io/imports/csv_number.h"
@@ -347,13 +348,13 @@ void write_mission(const Mission& m, const std::string& path) {
   out.commit();
 }
 
-void merge_model_config(Mission& m, const std::string& path) {
+std::optional<std::string> merge_model_config(Mission& m, const std::string& path) {
   SensorModel model = m.model;
   merge_sensor_model_yaml(path, model);
-  change_model(m, model, path);
+  return change_model(m, model, path);
 }
 
-void change_model(Mission& m, SensorModel model, const std::string& path) {
+std::optional<std::string> change_model(Mission& m, SensorModel model, const std::string& path) {
   const SensorModel& before = m.model;
   // Per-sample half-widths replace the model's bound of their channel (a log's own,
   // or computed between readings at import from the model then): a --config that
@@ -397,8 +398,19 @@ void change_model(Mission& m, SensorModel model, const std::string& path) {
       {&SensorModel::dvl_absolute, m.conversion_margins.dvl}};
   for (const auto& [key, margin] : margins)
     if (model.*key != before.*key) model.*key = add_up(model.*key, margin);
+  // GPS: a fix's own half-widths replace the model's bounds, but a config that sets
+  // those bounds says the fixes may be worse than they claim: the larger holds.
+  std::optional<std::string> notice;
+  const bool gps_changed = model.gps_metres != before.gps_metres || model.gps_lat_deg != before.gps_lat_deg ||
+                           model.gps_lon_deg != before.gps_lon_deg;
+  if (gps_changed && !m.gps_given_north_halfwidth.empty()) {
+    m.gps_model_floor = true;
+    notice = path + " sets the GPS bounds of a mission whose fixes carry their own half-widths: each fix's box is the "
+                    "larger of the two";
+  }
   m.model = model;
   fill_local_gps(m, path);
+  return notice;
 }
 
 }  // namespace gesmi::io

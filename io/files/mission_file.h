@@ -3,6 +3,7 @@
 // origin, sensor model and, for simulated missions, the truth. read_mission()
 // validates everything and names file, dataset, row, field and reason on error.
 
+#include <optional>
 #include <string>
 
 #include "solver/mission/mission.h"
@@ -23,14 +24,16 @@ void write_mission(const Mission& mission, const std::string& path);
 void validate_mission(const Mission& mission, const std::string& source);
 
 /// `--config`: merges the sensor model YAML at `path` over the mission's model, then
-/// change_model().
-void merge_model_config(Mission& mission, const std::string& path);
+/// change_model(); returns its notice.
+std::optional<std::string> merge_model_config(Mission& mission, const std::string& path);
 
 /// Replaces the mission's model (a --config, a key set from Python): refuses a change
 /// that per-sample half-widths would ignore, or the step model 'sample' across a gap;
 /// adds back the import's unit-conversion margin to a bound it replaces; recomputes what
 /// derives from the model (the fixes' boxes in the local frame). FormatError naming
-/// `source`; the mission is unchanged then.
-void change_model(Mission& mission, SensorModel model, const std::string& source);
+/// `source`; the mission is unchanged then. A change of the GPS bounds of a mission
+/// whose fixes carry their own half-widths sets Mission::gps_model_floor (each fix's box
+/// becomes the larger of the two) and returns a one-line notice saying so.
+std::optional<std::string> change_model(Mission& mission, SensorModel model, const std::string& source);
 
 }  // namespace gesmi::io

@@ -73,10 +73,14 @@ struct Mission {
   // half-widths, or a GPS CSV's north/east_halfwidth columns), replacing the model's
   // GPS bounds for that fix: both empty, or both of length G.
   std::vector<double> gps_given_north_halfwidth, gps_given_east_halfwidth;  // m
+  // Set when a --config (or Python) changed the model's GPS bounds of a mission whose
+  // fixes carry their own: each fix's box is then the larger of its own half-widths
+  // and the model's bounds, in solve and kalman alike (docs/formats.md, "GPS bounds").
+  bool gps_model_floor = false;
   // The same fixes in the local frame, filled by io/ (geodesy): centre and
   // half-width of the box that contains the true position (the given bound, or else
-  // the larger of the model's degree bound in metres and its metric bound; plus the
-  // conversion error).
+  // the larger of the model's degree bound in metres and its metric bound, or the
+  // larger of both with gps_model_floor; plus the conversion error).
   std::vector<double> gps_north, gps_east;                     // m
   std::vector<double> gps_north_halfwidth, gps_east_halfwidth;  // m
   // Largest angle between true north and the local frame's north axis (meridian

@@ -60,7 +60,9 @@ int run_kalman(std::span<const std::string> args) {
   progress.update(-1.0, "reading " + v["mission"].as<std::string>());
   auto start = Clock::now();
   Mission mission = io::read_mission(v["mission"].as<std::string>());
-  if (v.count("config")) io::merge_model_config(mission, v["config"].as<std::string>());
+  if (v.count("config"))
+    if (const auto notice = io::merge_model_config(mission, v["config"].as<std::string>()))
+      std::fprintf(stderr, "gesmi %s: note: %s\n", "kalman", notice->c_str());
   file.timings_ms["load"] = elapsed_ms(start);
   start = Clock::now();
   progress.update(-1.0, "smoothing (linearisations until no coordinate moves more than " + io::format_number(o.tolerance) +

@@ -51,7 +51,9 @@ int run_solve(std::span<const std::string> args) {
   auto start = Clock::now();
   // The solve never looks at the truth; only the envelope picture draws it.
   Mission mission = io::read_mission(mission_path, siblings.envelope_png ? io::TruthReading::read : io::TruthReading::skip);
-  if (v.count("config")) io::merge_model_config(mission, v["config"].as<std::string>());
+  if (v.count("config"))
+    if (const auto notice = io::merge_model_config(mission, v["config"].as<std::string>()))
+      std::fprintf(stderr, "gesmi %s: note: %s\n", "solve", notice->c_str());
   apply_mine_count(v, mission);
   // Hashed once: the warm start compares it, the result stores it.
   const std::string navigation = io::navigation_digest(mission);
