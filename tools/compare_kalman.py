@@ -22,8 +22,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 
+def one_line(text):
+    """Control characters escaped: every message is one line, whatever a path holds."""
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
+
+
 def fail(message):
-    print("compare_kalman: " + message, file=sys.stderr)
+    print("compare_kalman: " + one_line(message), file=sys.stderr)
     sys.exit(2)
 
 
@@ -63,7 +68,7 @@ def main():
         if data[key] is None:
             fail(f"{path}: missing {key}: not a gesmi result / kalman file")
     if result["@status"] != "consistent" and not args.show_inconsistent:
-        print(f"compare_kalman: {args.result} is an inconsistent result (the data contradict the bounds, so its boxes "
+        print(f"compare_kalman: {one_line(args.result)} is an inconsistent result (the data contradict the bounds, so its boxes "
               "are no answer): see its diagnosis with gesmi solve, or add --show-inconsistent to compare anyway",
               file=sys.stderr)
         sys.exit(3)

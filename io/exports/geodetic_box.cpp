@@ -25,11 +25,26 @@ double metres_as_longitude(double metres, double max_latitude) {
   return metres / (kWgs84EquatorialRadius * std::cos(std::abs(max_latitude) / kDegree)) * kDegree * kRoundingSlack;
 }
 
+double farthest_latitude(double origin_latitude) {
+  // A degree of latitude is at least M pi / 180 = 110.57 km long.
+  const double reach = kGeodeticExportRadius / (kWgs84SmallestRadius / kDegree);
+  return std::min(std::abs(origin_latitude) + reach + 0.01, 89.9);
+}
+
+bool within_export_radius(const Interval& north, const Interval& east) {
+  const double n = std::max(std::abs(north.lo()), std::abs(north.hi())), e = std::max(std::abs(east.lo()), std::abs(east.hi()));
+  return std::hypot(n, e) <= kGeodeticExportRadius;
+}
+
+double longitude_near(double longitude, double origin_longitude) {
+  if (longitude - origin_longitude > 180.0) return longitude - 360.0;
+  if (longitude - origin_longitude < -180.0) return longitude + 360.0;
+  return longitude;
+}
+
 GeoOrigin geodetic_point(const LocalFrame& frame, double north, double east) {
   GeoOrigin g = frame.to_geodetic(north, east);
-  const double origin = frame.origin().longitude;
-  if (g.longitude - origin > 180.0) g.longitude -= 360.0;
-  if (g.longitude - origin < -180.0) g.longitude += 360.0;
+  g.longitude = longitude_near(g.longitude, frame.origin().longitude);
   return g;
 }
 
@@ -55,7 +70,7 @@ GeodeticBox geodetic_box(const LocalFrame& frame, const Interval& north, const I
   }
   // The latitude the margins are taken at: the box's farthest from the equator, plus
   // what the margin itself may add (well under a degree).
-  const double latitude = std::max(std::abs(box.latitude_lo), std::abs(box.latitude_hi)) + 0.01;
+  const double latitude = std::min(std::max(std::abs(box.latitude_lo), std::abs(box.latitude_hi)) + 0.01, 89.9);
   const double margin = geodetic_margin(longest_piece * kRoundingSlack, latitude);
   const double dlat = metres_as_latitude(margin), dlon = metres_as_longitude(margin, latitude);
   box.latitude_lo -= dlat;

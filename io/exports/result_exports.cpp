@@ -19,11 +19,19 @@ namespace {
 
 using nlohmann::json;
 
-// Geodetic bounds of a local box: outward when bounded, the whole globe when
-// unbounded, NaN when empty (an inconsistent result).
+// The geodetic columns of a result whose origin does not allow them (geodetic_problem).
+constexpr GeodeticBox kNoGeodeticBox{NAN, NAN, NAN, NAN};
+
+std::optional<LocalFrame> geodetic_frame(const SolveResult& r) {
+  if (!geodetic_problem(r.origin).empty()) return std::nullopt;
+  return LocalFrame(*r.origin);
+}
+
+// Geodetic bounds of a local box: outward when bounded and within the export radius,
+// the whole globe when unbounded or farther, NaN when empty (an inconsistent result).
 GeodeticBox geodetic_bounds(const LocalFrame& frame, const Interval& north, const Interval& east) {
   if (north.is_empty() || east.is_empty()) return {NAN, NAN, NAN, NAN};
-  if (!north.is_bounded() || !east.is_bounded()) return {-90.0, 90.0, -180.0, 180.0};
+  if (!north.is_bounded() || !east.is_bounded() || !within_export_radius(north, east)) return {-90.0, 90.0, -180.0, 180.0};
   return geodetic_box(frame, north, east);
 }
 
@@ -78,14 +86,14 @@ json feature(json properties, json geometry) {
 
 }  // namespace
 
-GeoOrigin export_origin(const SolveResult& r, const std::string& path) {
-  if (!r.origin)
-    throw FormatError(path + ": the result records no origin (written before gesmi 0.6): solve the mission again to "
-                             "export it in latitude/longitude");
-  if (!(std::abs(r.origin->latitude) <= kGeodeticExportLatitude))
-    throw FormatError(path + ": the origin's latitude " + format_number(r.origin->latitude) + " is beyond +-" +
-                      format_number(kGeodeticExportLatitude) + " degrees, where geodetic exports are not supported");
-  return *r.origin;
+std::string geodetic_problem(const std::optional<GeoOrigin>& origin) {
+  if (!origin)
+    return "the result records no origin (written by an older gesmi): solve the mission again to export it in "
+           "latitude/longitude";
+  if (!(std::abs(origin->latitude) <= kGeodeticExportLatitude))
+    return "the origin's latitude " + format_number(origin->latitude) + " is beyond +-" +
+           format_number(kGeodeticExportLatitude) + " degrees, where latitude/longitude exports are not supported";
+  return {};
 }
 
 const char* status_name(const MissionSolution& s) { return s.report.consistent ? "consistent" : "inconsistent"; }
@@ -98,7 +106,7 @@ int marks_of_mine(const MissionSolution& s, int mine) {
 }
 
 void write_mines_csv(const SolveResult& r, const std::string& path) {
-  const LocalFrame frame(export_origin(r, path));
+  const std::optional<LocalFrame> frame = geodetic_frame(r);
   const MissionSolution& s = r.solution;
   std::string text =
       "mine,marks,north_lo,north_hi,east_lo,east_hi,down_lo,down_hi,latitude_lo,latitude_hi,longitude_lo,longitude_hi,"
@@ -107,14 +115,14 @@ void write_mines_csv(const SolveResult& r, const std::string& path) {
     const Vec3I& m = s.domains.mines[i];
     text += std::to_string(i) + "," + std::to_string(marks_of_mine(s, static_cast<int>(i)));
     for (int c = 0; c < 3; ++c) append_bounds(text, m[c]);
-    append_geodetic(text, geodetic_bounds(frame, m[0], m[1]));
+    append_geodetic(text, frame ? geodetic_bounds(*frame, m[0], m[1]) : kNoGeodeticBox);
     text += std::string(",") + status_name(s) + "\n";
   }
   write_text_file(path, text);
 }
 
 void write_tube_csv(const SolveResult& r, const std::string& path) {
-  const LocalFrame frame(export_origin(r, path));
+  const std::optional<LocalFrame> frame = geodetic_frame(r);
   const MissionSolution& s = r.solution;
   const TubeDomains& d = s.domains;
   if (d.size() != s.time.size()) throw FormatError(path + ": the result was read without its tube");
@@ -129,7 +137,7 @@ void write_tube_csv(const SolveResult& r, const std::string& path) {
       append_bounds(row, d.px[k]);
       append_bounds(row, d.py[k]);
       append_bounds(row, d.pz[k]);
-      append_geodetic(row, geodetic_bounds(frame, d.px[k], d.py[k]));
+      append_geodetic(row, frame ? geodetic_bounds(*frame, d.px[k], d.py[k]) : kNoGeodeticBox);
       row += std::string(",") + status_name(s) + "\n";
       out.write(row.data(), static_cast<std::streamsize>(row.size()));
     }
@@ -137,29 +145,43 @@ void write_tube_csv(const SolveResult& r, const std::string& path) {
 }
 
 void write_geojson(const SolveResult& r, const Mission* mission, const std::string& path) {
-  const GeoOrigin origin = export_origin(r, path);
+  if (const std::string why = geodetic_problem(r.origin); !why.empty()) throw FormatError(path + ": " + why);
+  const GeoOrigin origin = *r.origin;
   const LocalFrame frame(origin);
   const MissionSolution& s = r.solution;
   const TubeDomains& d = s.domains;
   const std::string status = status_name(s);
   json features = json::array();
 
-  // The envelope: widened by what the chords between converted points may lose.
-  const double latitude = std::abs(origin.latitude) + 1.0;  // the 100 km zone spans under a degree
-  const BoxOutline outline = outline_of_boxes(d.py, d.px, geodetic_margin(kGeodeticPiece, latitude));
+  // The envelope: the boxes within the export radius, widened by what the chords
+  // between converted points may lose.
+  std::vector<Interval> east(d.size(), Interval::empty()), north(d.size(), Interval::empty());
+  std::size_t far = 0;
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    const bool bounded = !d.px[k].is_empty() && !d.py[k].is_empty() && d.px[k].is_bounded() && d.py[k].is_bounded();
+    if (bounded && !within_export_radius(d.px[k], d.py[k])) {
+      ++far;
+      continue;
+    }
+    north[k] = d.px[k];
+    east[k] = d.py[k];
+  }
+  const BoxOutline outline = outline_of_boxes(east, north, geodetic_margin(kGeodeticPiece, farthest_latitude(origin.latitude)));
   if (!outline.polygons.empty()) {
     json polygons = json::array();
     for (const OutlinePolygon& p : outline.polygons) polygons.push_back(geodetic_polygon(frame, p));
     json geometry = polygons.size() == 1 ? json{{"type", "Polygon"}, {"coordinates", polygons[0]}}
                                          : json{{"type", "MultiPolygon"}, {"coordinates", polygons}};
     json properties = {{"kind", "envelope"}, {"status", status}, {"samples", d.size()},
-                       {"unbounded_samples", outline.unbounded_boxes}, {"grid_cell_m", outline.cell}};
+                       {"unbounded_samples", outline.unbounded_boxes - far}, {"far_samples", far},
+                       {"grid_cell_m", outline.cell}};
     if (r.epoch) properties["epoch_utc"] = format_iso8601(*r.epoch);
     features.push_back(feature(std::move(properties), std::move(geometry)));
   }
   for (std::size_t i = 0; i < d.mines.size(); ++i) {
     const Vec3I& m = d.mines[i];
-    if (m[0].is_empty() || m[1].is_empty() || !m[0].is_bounded() || !m[1].is_bounded()) continue;
+    if (m[0].is_empty() || m[1].is_empty() || !m[0].is_bounded() || !m[1].is_bounded() || !within_export_radius(m[0], m[1]))
+      continue;
     json properties = {{"kind", "mine"}, {"mine", i}, {"status", status}, {"marks", marks_of_mine(s, static_cast<int>(i))},
                        {"north_width_m", m[0].width()}, {"east_width_m", m[1].width()}};
     if (!m[2].is_empty() && m[2].is_bounded()) {
@@ -173,8 +195,10 @@ void write_geojson(const SolveResult& r, const Mission* mission, const std::stri
       json properties = {{"kind", "gps_fix"}, {"status", status}, {"time", mission->gps_time[i]}};
       if (i < s.gps_outlier.size()) properties["outlier"] = s.gps_outlier[i] != 0;
       if (r.epoch) properties["utc"] = format_iso8601_micro(*r.epoch, mission->gps_time[i]);
+      // Longitudes within 180 degrees of the origin's, as the polygons' (geodetic_point).
+      const double longitude = longitude_near(mission->gps_longitude[i], origin.longitude);
       features.push_back(feature(std::move(properties), {{"type", "Point"},
-                                                         {"coordinates", {mission->gps_longitude[i], mission->gps_latitude[i]}}}));
+                                                         {"coordinates", {longitude, mission->gps_latitude[i]}}}));
     }
   json collection = {{"type", "FeatureCollection"}, {"status", status}, {"gesmi_version", std::string(version())},
                      {"features", std::move(features)}};

@@ -10,6 +10,7 @@
 // outward (io/exports/geodetic_box.h), so they contain the local ones. Every row and
 // feature carries the result's status: an inconsistent result's boxes are no answer.
 
+#include <optional>
 #include <span>
 #include <string>
 
@@ -18,9 +19,11 @@
 
 namespace gesmi::io {
 
-/// The origin every geodetic export needs: the result's (format 5), else FormatError
-/// naming `path` with the remedy. Also refuses origins beyond kGeodeticExportLatitude.
-GeoOrigin export_origin(const SolveResult& result, const std::string& path);
+/// Why a result's origin allows no latitude/longitude export, with the remedy: none
+/// recorded (a result of an older gesmi), or beyond kGeodeticExportLatitude; empty when
+/// it allows them. The CSV exports then leave their latitude/longitude columns NaN;
+/// the GeoJSON export refuses (FormatError).
+std::string geodetic_problem(const std::optional<GeoOrigin>& origin);
 
 /// "consistent" or "inconsistent".
 const char* status_name(const MissionSolution& solution);

@@ -49,9 +49,7 @@ void write_kalman_result(const KalmanFile& k, const std::string& path) {
     write_model_attributes(f, "/model", k.model);
     write_provenance(f, "trajectory");
     write_units(f, kKalmanUnits);
-    f.set_attribute("/time", "units", time_units(k.epoch));
-    f.set_attribute("/time", "long_name", std::string("sample time"));
-    f.set_attribute("/time", "standard_name", std::string("time"));
+    write_time_units(f, "/time", "sample time", k.epoch);
     f.close();
   }
   out.commit();

@@ -30,7 +30,7 @@ constexpr H5FormatVersions kVersions{.current = 3, .oldest = 1, .when_absent = 0
 std::string half_width_dataset(const NavChannel& c) { return "/nav/half_widths/" + std::string(c.name); }
 
 // Units (UDUNITS, as CF writes them; per column where columns differ) of the mission's
-// datasets; /nav/time's follow the epoch (provenance.h).
+// datasets but its times, whose units follow the epoch (write_time_units).
 constexpr DatasetUnits kMissionUnits[] = {
     {"/nav/attitude", "rad, rad, rad", "roll, pitch, heading (from true north, clockwise)"},
     {"/nav/velocity", "m s-1, m s-1, m s-1", "DVL velocity in the body frame: forward, starboard, down"},
@@ -44,10 +44,8 @@ constexpr DatasetUnits kMissionUnits[] = {
     {"/nav/half_widths/vz", "m s-1", "bound of the down velocity error"},
     {"/nav/half_widths/altitude", "m", "bound of the altitude error"},
     {"/nav/half_widths/depth", "m", "bound of the depth error"},
-    {"/gps/time", "s", "GPS fix time"},
     {"/gps/lonlat", "degrees_east, degrees_north", "GPS fix longitude, latitude (WGS84)"},
     {"/gps/halfwidth", "m, m", "bound of each fix's north and east errors"},
-    {"/marks/time", "s", "sonar mark time"},
     {"/marks/mine", "1", "mine number of the mark (-1: not associated)"},
     {"/marks/range", "m", "measured slant range"},
     {"/marks/side", "1", "sonar side: +1 starboard, -1 port"},
@@ -340,9 +338,9 @@ void write_mission(const Mission& m, const std::string& path) {
     f.set_attribute("/", "datum", std::string("WGS84"));
     write_provenance(f, "trajectory");
     write_units(f, kMissionUnits);
-    f.set_attribute("/nav/time", "units", time_units(m.epoch));
-    f.set_attribute("/nav/time", "long_name", std::string("sample time"));
-    f.set_attribute("/nav/time", "standard_name", std::string("time"));
+    write_time_units(f, "/nav/time", "sample time", m.epoch);
+    write_time_units(f, "/gps/time", "GPS fix time", m.epoch);
+    write_time_units(f, "/marks/time", "sonar mark time", m.epoch);
     f.close();
   }
   out.commit();

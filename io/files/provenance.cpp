@@ -44,8 +44,12 @@ void set_command_line(std::span<const std::string> arguments) {
   command_line() = line;
 }
 
-std::string time_units(const std::optional<std::int64_t>& epoch) {
-  return epoch ? "seconds since " + format_iso8601(*epoch) : std::string("s");
+void write_time_units(H5File& f, const std::string& dataset, const std::string& long_name,
+                      const std::optional<std::int64_t>& epoch) {
+  if (f.kind(dataset) != H5Kind::dataset) return;
+  f.set_attribute(dataset, "units", epoch ? "seconds since " + format_iso8601(*epoch) : std::string("s"));
+  f.set_attribute(dataset, "standard_name", std::string("time"));
+  f.set_attribute(dataset, "long_name", long_name);
 }
 
 void write_provenance(H5File& f, std::string_view feature_type) {

@@ -7,6 +7,8 @@
 //   on every dataset `units` (UDUNITS syntax, as CF writes them; one per column,
 //   comma-separated, where columns differ) and `long_name`.
 
+#include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -32,8 +34,10 @@ struct DatasetUnits {
 /// Sets `units` and `long_name` on each dataset of the table the file has.
 void write_units(H5File& file, std::span<const DatasetUnits> table);
 
-/// CF's units of a time axis: "seconds since YYYY-MM-DDThh:mm:ssZ" when the epoch is
-/// known, else "s".
-std::string time_units(const std::optional<std::int64_t>& epoch);
+/// Sets a time dataset's `units` as CF writes a time axis ("seconds since
+/// YYYY-MM-DDThh:mm:ssZ" when the epoch is known, else "s"), its `standard_name` "time"
+/// and `long_name`; nothing when the file has no such dataset.
+void write_time_units(H5File& file, const std::string& dataset, const std::string& long_name,
+                      const std::optional<std::int64_t>& epoch);
 
 }  // namespace gesmi::io

@@ -36,7 +36,7 @@ const char* const kDatasets[] = {"/time",          "/tube/lower",       "/tube/u
 
 constexpr const char* kDatum = "WGS84";
 
-// Units of the result's datasets (provenance.h); /time's follow the epoch.
+// Units of the result's datasets (provenance.h) but its times (write_time_units).
 constexpr DatasetUnits kResultUnits[] = {
     {"/tube/lower", "m, m, m", "lower bounds of the position: north, east, down (local frame)"},
     {"/tube/upper", "m, m, m", "upper bounds of the position: north, east, down (local frame)"},
@@ -50,7 +50,6 @@ constexpr DatasetUnits kResultUnits[] = {
     {"/waterfall/upper", "m", "largest slant range at which the mine can appear"},
     {"/marks/candidates", "1", "1 where the mine is still a possible association of the mark"},
     {"/marks/outlier", "1", "1 when every tolerated-outlier hypothesis removes the mark"},
-    {"/marks/time", "s", "sonar mark time"},
     {"/marks/range", "m", "measured slant range"},
     {"/marks/mine", "1", "mine number of the mark (-1: not associated)"},
     {"/marks/side", "1", "sonar side: +1 starboard, -1 port"},
@@ -262,9 +261,8 @@ void write_result(const SolveResult& r, const std::string& path) {
     // Informative, outside the digests: how the file was made, and its units.
     write_provenance(f, "trajectory");
     write_units(f, kResultUnits);
-    f.set_attribute("/time", "units", time_units(r.epoch));
-    f.set_attribute("/time", "long_name", std::string("sample time"));
-    f.set_attribute("/time", "standard_name", std::string("time"));
+    write_time_units(f, "/time", "sample time", r.epoch);
+    write_time_units(f, "/marks/time", "sonar mark time", r.epoch);
     f.close();
   }
   out.commit();

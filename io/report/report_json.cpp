@@ -40,7 +40,7 @@ void append_json(const json& value, std::string& out) {
       for (const auto& [key, item] : value.items()) {
         if (!first) out += ',';
         first = false;
-        out += json(key).dump();
+        out += json(key).dump(-1, ' ', false, json::error_handler_t::replace);
         out += ':';
         append_json(item, out);
       }
@@ -48,7 +48,9 @@ void append_json(const json& value, std::string& out) {
       return;
     }
     default:
-      out += value.dump();
+      // Paths and messages need not be UTF-8 (a file name is bytes): invalid bytes
+      // become U+FFFD rather than an exception after the outputs are written.
+      out += value.dump(-1, ' ', false, json::error_handler_t::replace);
   }
 }
 

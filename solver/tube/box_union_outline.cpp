@@ -134,18 +134,39 @@ BoxOutline outline_of_boxes(std::span<const Interval> x, std::span<const Interva
   }
   if (kept.empty()) return out;
   CellGrid g;
-  g.cell = std::max({min_cell, std::sqrt((xhi - xlo) * (yhi - ylo) / static_cast<double>(max_cells)),
-                     (xhi - xlo) / 65536.0, (yhi - ylo) / 65536.0});
+  const double width = xhi - xlo, height = yhi - ylo;
+  g.cell = std::max({min_cell, std::sqrt(width / static_cast<double>(max_cells) * height), width / 65536.0, height / 65536.0});
+  // Lattice points stay exact enough only when the extent's coordinates are within 2^40
+  // cells of zero; a box that far (a hostile file) is no tube anyone draws.
+  if (!std::isfinite(width) || !std::isfinite(height) || !std::isfinite(g.cell) ||
+      std::max({std::abs(xlo), std::abs(xhi), std::abs(ylo), std::abs(yhi)}) / g.cell > 0x1p40)
+    throw std::invalid_argument("outline_of_boxes: boxes beyond the range an outline can be drawn over");
   g.x0 = xlo;
   g.y0 = ylo;
-  g.columns = static_cast<std::size_t>(std::ceil((xhi - xlo) / g.cell)) + 3;
-  g.rows = static_cast<std::size_t>(std::ceil((yhi - ylo) / g.cell)) + 3;
-  g.filled.assign(g.columns * g.rows, 0);
+  g.columns = static_cast<std::size_t>(std::ceil(width / g.cell)) + 3;
+  g.rows = static_cast<std::size_t>(std::ceil(height / g.cell)) + 3;
+  // Each box adds +1 / -1 at its corners of a difference grid whose 2-D prefix sums
+  // count the boxes over each cell: linear in boxes plus cells, whatever the boxes' sizes.
+  std::vector<std::int32_t> count((g.rows + 1) * (g.columns + 1), 0);
+  const auto at = [&](std::size_t r, std::size_t c) -> std::int32_t& { return count[r * (g.columns + 1) + c]; };
   for (const std::size_t k : kept) {
     const std::size_t c0 = g.index(x[k].lo() - pad, g.x0, g.columns), c1 = g.index(x[k].hi() + pad, g.x0, g.columns);
     const std::size_t r0 = g.index(y[k].lo() - pad, g.y0, g.rows), r1 = g.index(y[k].hi() + pad, g.y0, g.rows);
-    for (std::size_t r = r0; r <= r1; ++r) std::fill_n(&g.at(r, c0), c1 - c0 + 1, std::uint8_t{1});
+    ++at(r0, c0);
+    --at(r0, c1 + 1);
+    --at(r1 + 1, c0);
+    ++at(r1 + 1, c1 + 1);
   }
+  g.filled.assign(g.columns * g.rows, 0);
+  for (std::size_t r = 0; r < g.rows; ++r)
+    for (std::size_t c = 0; c < g.columns; ++c) {
+      std::int32_t v = at(r, c);
+      if (r > 0) v += at(r - 1, c);
+      if (c > 0) v += at(r, c - 1);
+      if (r > 0 && c > 0) v -= at(r - 1, c - 1);
+      at(r, c) = v;
+      g.filled[r * g.columns + c] = v > 0;
+    }
   join_corner_contacts(g);
   out.cell = g.cell;
 

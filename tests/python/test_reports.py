@@ -65,6 +65,31 @@ def test_solve_reports_the_inconsistency_as_the_result_records_it(folder, incons
     assert set(rep["timings_ms"]) >= {"load", "propagate", "write"}
 
 
+def test_a_refused_inconsistent_result_still_reports(folder, inconsistent):
+    result = str(folder / "refused.h5")
+    assert run_gesmi("solve", inconsistent, "-o", result).returncode == 3
+    for args in (["candidates", result], ["waterfall", result, "-o", str(folder / "never.png")],
+                 ["export", result, "--format", "tube-csv", "-o", str(folder / "never.csv")]):
+        rep = report(*args, exit_code=3)
+        assert rep["refused"] and rep["status"] == "inconsistent" and rep["outputs"] == []
+    assert not os.path.exists(folder / "never.png") and not os.path.exists(folder / "never.csv")
+
+
+def test_skipped_imports_and_simulated_localization(folder, mission_file):
+    csv_folder = str(folder / "skip_csv")
+    assert run_gesmi("export", mission_file, "-o", csv_folder).returncode == 0
+    target = str(folder / "existing.h5")
+    open(target, "w").write("placeholder")
+    r = subprocess.run([GESMI, "import", "nav", "nav.csv", "--gps", "gps.csv", "-o", target, "--skip-existing", "--json"],
+                       cwd=csv_folder, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    rep = json.loads(r.stdout)
+    VALIDATOR.validate(rep)
+    assert rep["command"] == "import nav" and rep["skipped"]
+    scenario = os.path.join(SOURCE, "missions", "localization", "triangle_two_hypotheses.yaml")
+    assert run_gesmi("localize", scenario, "--simulate", "--json").returncode == 2
+
+
 def test_outlier_solve_lists_the_flagged_marks_of_its_result(folder, inconsistent):
     result = str(folder / "tolerant.h5")
     rep = report("solve", inconsistent, "--max-outliers", "1", "-o", result)

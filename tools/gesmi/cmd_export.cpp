@@ -54,8 +54,12 @@ int export_result(const po::variables_map& v, const std::string& format, const s
   Progress progress("gesmi export:");  // on a terminal, for long runs only (progress.h)
   progress.update(-1.0, "reading " + path);
   const io::SolveResult r = io::read_result(path, {.tube = format != "mines-csv", .waterfall = false});
+  if (!r.solution.report.consistent) progress.finish();  // before the refusal's line, or the notes below
   if (!accept_result_status(v, "export", path, r.solution.report.consistent)) return kExitInconsistent;
-  io::export_origin(r, path);
+  if (const std::string why = io::geodetic_problem(r.origin); !why.empty()) {
+    if (format == "geojson") throw UsageError(path + ": " + why);
+    std::fprintf(stderr, "%s\n", io::one_line("gesmi export: note: latitude/longitude columns left NaN: " + path + ": " + why).c_str());
+  }
   std::optional<Mission> mission;
   if (v.count("mission")) {
     if (format != "geojson") throw UsageError("--mission: only the geojson format uses the mission (its GPS fixes)");

@@ -104,7 +104,7 @@ int import_marks(std::span<const std::string> args) {
   io::OutputSet outputs(input_files(v, {"marks", "into", "map"}));
   outputs.check(output);
   const std::optional<int> mines = parse_mines(v);
-  if (skipped_as_existing(v, "import", {output})) return kExitOk;
+  if (skipped_as_existing(v, "import marks", {output})) return kExitOk;
   Progress progress("gesmi import:");
   progress.update(-1.0, "reading " + v["into"].as<std::string>() + " and " + v["marks"].as<std::string>());
   Mission m = io::read_mission(v["into"].as<std::string>());
@@ -160,7 +160,7 @@ int import_nav(std::span<const std::string> args) {
   inputs.truth_mines = optional_path(v, "truth-mines");
   if (v.count("origin")) inputs.origin = parse_origin(v["origin"].as<std::string>());
   inputs.mines = parse_mines(v);
-  if (skipped_as_existing(v, "import", {output})) return kExitOk;
+  if (skipped_as_existing(v, "import nav", {output})) return kExitOk;
   std::vector<std::string> notes;
   Progress progress("gesmi import:");
   progress.update(-1.0, "reading " + v["nav"].as<std::string>() + " and its fixes and marks");
@@ -202,7 +202,7 @@ int import_gesmi_txt(std::span<const std::string> args) {
   inputs.config = optional_path(v, "config");
   if (v.count("origin")) inputs.origin = parse_origin(v["origin"].as<std::string>());
   inputs.mines = parse_mines(v);
-  if (skipped_as_existing(v, "import", {output})) return kExitOk;
+  if (skipped_as_existing(v, "import gesmi-txt", {output})) return kExitOk;
   Progress progress("gesmi import:");
   progress.update(-1.0, "reading " + v["log"].as<std::string>());
   const Mission m = io::import_gesmi_txt(v["log"].as<std::string>(), xy == "fixes" ? io::GesmiXy::fixes : io::GesmiXy::truth, inputs);

@@ -97,7 +97,10 @@ int run_localize(std::span<const std::string> args) {
   if (!parse_options(args, options, positional, values, kUsage)) return kExitOk;
   if (!values.count("scenario")) throw UsageError(std::string("missing SCENARIO.yaml; usage: ") + kUsage);
   const LocalizationProblem problem = io::read_localization_scenario(values["scenario"].as<std::string>());
-  if (values.count("simulate")) return simulate(problem, values);
+  if (values.count("simulate")) {
+    if (values.count("json")) throw UsageError("--json: --simulate prints measurements as YAML, not a report");
+    return simulate(problem, values);
+  }
   if (!values.count("output")) throw UsageError(std::string("missing -o OUT_DIR; usage: ") + kUsage);
   const std::string folder = values["output"].as<std::string>();
   io::OutputSet outputs(input_files(values, {"scenario"}));

@@ -10,6 +10,7 @@
 #include "io/files/mission_file.h"
 #include "io/output/output_set.h"
 #include "io/files/solve_outputs.h"
+#include "io/exports/result_exports.h"
 #include "io/files/warm_start_file.h"
 #include "solver/solve/solve_mission.h"
 #include "tools/gesmi/cli_args.h"
@@ -55,6 +56,10 @@ int run_solve(std::span<const std::string> args) {
     if (const auto notice = io::merge_model_config(mission, v["config"].as<std::string>()))
       std::fprintf(stderr, "gesmi %s: note: %s\n", "solve", notice->c_str());
   apply_mine_count(v, mission);
+  // Before the solve, not after it: a GeoJSON needs latitudes/longitudes the origin allows.
+  if (siblings.geojson)
+    if (const std::string why = io::geodetic_problem(mission.origin); !why.empty())
+      throw UsageError("--geojson: " + mission_path + ": " + why);
   // Hashed once: the warm start compares it, the result stores it.
   const std::string navigation = io::navigation_digest(mission);
   MissionSolution previous;

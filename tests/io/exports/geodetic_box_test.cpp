@@ -66,7 +66,18 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Case{{48.2129, -4.4582}, 500, 300, 20}, Case{{48.2129, -4.4582}, 90000, 10000, 3000},
                       Case{{0.0, 10.0}, -60000, 60000, 20000}, Case{{70.0, 20.0}, 80000, -40000, 20000},
                       Case{{84.0, -150.0}, 20000, 85000, 20000}, Case{{-84.0, 179.99}, -90000, 1000, 5000},
-                      Case{{84.9, 0.0}, 0, 0, 40000}));
+                      Case{{84.9, 0.0}, 0, 0, 40000}, Case{{85.0, 30.0}, 470000, 0, 40000},
+                      Case{{-85.0, 30.0}, -470000, 20000, 30000}));
+
+TEST(GeodeticExportRadius, BoxesFartherThanTheRadiusAreNotConverted) {
+  EXPECT_TRUE(within_export_radius(Interval(-1000, 1000), Interval(499000, 499500)));
+  EXPECT_FALSE(within_export_radius(Interval(-1000, 1000), Interval(499500, 500100)));
+  EXPECT_FALSE(within_export_radius(Interval(1e300, 2e300), Interval(0, 1)));
+  // Within the radius of an origin at the highest latitude allowed, no pole: the
+  // latitude the margins take stays below 90 degrees.
+  EXPECT_LT(farthest_latitude(kGeodeticExportLatitude), 90.0);
+  EXPECT_GT(farthest_latitude(kGeodeticExportLatitude), kGeodeticExportLatitude + 4.5);
+}
 
 TEST(GeodeticMargin, GrowsWithThePieceAndTheLatitude) {
   EXPECT_GE(geodetic_margin(0.0, 0.0), kLocalFrameError);

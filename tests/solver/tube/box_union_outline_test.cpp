@@ -12,6 +12,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <stdexcept>
 
 namespace gesmi {
 namespace {
@@ -191,6 +192,32 @@ TEST(BoxUnionOutline, RandomTubesAreContainedTightAndValid) {
     expect_contains_boxes(o, b, pad);
     expect_tight(o, b, pad, rng);
   }
+}
+
+TEST(BoxUnionOutline, HugeOrFarBoxesAreDrawnCoarselyOrRefusedNeverDropped) {
+  // Huge: the cells grow with the extent (no crash, no endless loop, no empty answer).
+  // The exports never get here: they leave out boxes beyond 500 km of the origin.
+  Boxes b;
+  b.add(0, 1, 0, 1);
+  b.add(1e300, 1.5e300, 0, 1);
+  const BoxOutline o = outline_of_boxes(b.x, b.y, 0.0);
+  EXPECT_FALSE(o.polygons.empty());
+  EXPECT_GT(o.cell, 1e290);
+  // Far from zero for their size: the lattice could not be exact, so refused.
+  Boxes far;
+  far.add(1e17, 1e17 + 10, 0, 10);
+  EXPECT_THROW(outline_of_boxes(far.x, far.y, 0.0), std::invalid_argument);
+}
+
+TEST(BoxUnionOutline, LargeOverlappingBoxesCostCellsNotTheirAreas) {
+  // 20,000 boxes each nearly as large as the whole extent: their union is one square.
+  Boxes b;
+  for (int k = 0; k < 20000; ++k) b.add(-1000.0 + k * 0.01, 1000.0, -1000.0, 1000.0 - k * 0.01);
+  const BoxOutline o = outline_of_boxes(b.x, b.y, 0.0, 0.25, std::size_t{1} << 22);
+  ASSERT_EQ(o.polygons.size(), 1u);
+  EXPECT_EQ(o.polygons[0].holes.size(), 0u);
+  EXPECT_EQ(o.polygons[0].exterior.size(), 5u);  // a square: four corners and the closing point
+  expect_valid(o);
 }
 
 TEST(BoxUnionOutline, TheGridStaysWithinItsCellBudget) {
