@@ -53,9 +53,4 @@ double longitude_near(double longitude, double origin_longitude);
 /// within_export_radius).
 GeodeticBox geodetic_box(const LocalFrame& frame, const Interval& north, const Interval& east);
 
-/// A margin in metres as degrees of latitude and of longitude at latitudes up to
-/// |max_latitude| (both outward).
-double metres_as_latitude(double metres);
-double metres_as_longitude(double metres, double max_latitude);
-
 }  // namespace gesmi::io

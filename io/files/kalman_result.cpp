@@ -43,9 +43,7 @@ void write_kalman_result(const KalmanFile& k, const std::string& path) {
     f.set_attribute("/", "containment_3sigma_trajectory", k.containment_trajectory);
     f.set_attribute("/", "containment_3sigma_mines", k.containment_mines);
     for (const auto& [name, ms] : k.timings_ms) f.set_attribute("/", "timing_" + name + "_ms", ms);
-    f.set_attribute("/", "origin_latitude", k.origin.latitude);
-    f.set_attribute("/", "origin_longitude", k.origin.longitude);
-    f.set_attribute("/", "datum", std::string("WGS84"));
+    write_origin(f, k.origin);
     write_model_attributes(f, "/model", k.model);
     write_provenance(f, "trajectory");
     write_units(f, kKalmanUnits);

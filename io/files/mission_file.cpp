@@ -328,14 +328,12 @@ void write_mission(const Mission& m, const std::string& path) {
     if (!m.truth_marks_mine.empty()) f.write("/truth/marks_mine", m.truth_marks_mine, mk);
     if (!m.truth_gps_outlier.empty()) f.write("/truth/gps_outlier", m.truth_gps_outlier, g);
     write_format(f, kFormat, kVersions);
-    f.set_attribute("/", "origin_latitude", m.origin.latitude);
-    f.set_attribute("/", "origin_longitude", m.origin.longitude);
+    write_origin(f, m.origin);
     f.set_attribute("/", "mine_count", static_cast<std::int64_t>(m.mine_count));
     if (m.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*m.epoch));
     for (const auto& [name, member] : conversion_margin_attributes())
       if (m.conversion_margins.*member != 0.0) f.set_attribute("/", name, m.conversion_margins.*member);
     write_model_attributes(f, "/model", m.model);
-    f.set_attribute("/", "datum", std::string("WGS84"));
     write_provenance(f, "trajectory");
     write_units(f, kMissionUnits);
     write_time_units(f, "/nav/time", "sample time", m.epoch);

@@ -74,6 +74,12 @@ void write_provenance(H5File& f, std::string_view feature_type) {
   }
 }
 
+void write_origin(H5File& f, const GeoOrigin& origin) {
+  f.set_attribute("/", "origin_latitude", origin.latitude);
+  f.set_attribute("/", "origin_longitude", origin.longitude);
+  f.set_attribute("/", "datum", std::string(kDatum));
+}
+
 void write_units(H5File& f, std::span<const DatasetUnits> table) {
   for (const DatasetUnits& d : table)
     if (f.kind(d.dataset) == H5Kind::dataset) {

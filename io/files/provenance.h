@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "io/hdf5/h5_file.h"
+#include "solver/mission/mission.h"
 
 namespace gesmi::io {
 
@@ -24,6 +25,13 @@ void set_command_line(std::span<const std::string> arguments);
 /// Writes the provenance attributes and group. `feature_type`: CF's featureType of the
 /// file ("trajectory"), or empty.
 void write_provenance(H5File& file, std::string_view feature_type = {});
+
+/// The datum of the latitudes and longitudes gesmi reads and writes.
+inline constexpr const char* kDatum = "WGS84";
+
+/// The root attributes origin_latitude, origin_longitude (degrees) and datum: the
+/// origin of the file's local frame.
+void write_origin(H5File& file, const GeoOrigin& origin);
 
 struct DatasetUnits {
   const char* dataset;

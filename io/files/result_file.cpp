@@ -34,8 +34,6 @@ const char* const kDatasets[] = {"/time",          "/tube/lower",       "/tube/u
                                  "/marks/outlier",  "/marks/time",      "/marks/range",    "/marks/mine",
                                  "/marks/side",     "/gps/outlier"};
 
-constexpr const char* kDatum = "WGS84";
-
 // Units of the result's datasets (provenance.h) but its times (write_time_units).
 constexpr DatasetUnits kResultUnits[] = {
     {"/tube/lower", "m, m, m", "lower bounds of the position: north, east, down (local frame)"},
@@ -251,9 +249,7 @@ void write_result(const SolveResult& r, const std::string& path) {
     f.set_attribute("/", "mark_count", static_cast<std::int64_t>(s.mark_count()));
     f.set_attribute("/", "gesmi_version", r.version);
     if (r.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*r.epoch));
-    f.set_attribute("/", "origin_latitude", r.origin->latitude);
-    f.set_attribute("/", "origin_longitude", r.origin->longitude);
-    f.set_attribute("/", "datum", std::string(kDatum));
+    write_origin(f, *r.origin);
     for (const auto& [name, ms] : s.timings_ms) f.set_attribute("/", "timing_" + name + "_ms", ms);
     std::vector<std::pair<std::string, std::string>> digested = fields;
     for (const char* dataset : kDatasets) digested.emplace_back(dataset, *f.string_attribute(dataset, "sha256"));

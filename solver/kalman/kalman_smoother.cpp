@@ -143,6 +143,7 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
   KalmanResult result;
   result.steps = n;
   result.mines = k_mines;
+  if (o.max_iterations < 1) return result;  // nothing solved (validate() refuses such options)
   ArrowheadChain chain(n, 3 * k_mines);  // one set of buffers for every linearisation
   for (int it = 0; it < o.max_iterations; ++it) {
     build_and_solve(m, model, fixes, o, lin, chain);
@@ -162,29 +163,28 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     }
     result.last_step = step;
     result.converged = step <= o.tolerance;
-    if (!result.converged && it + 1 < o.max_iterations) continue;
-    chain.release_workspace();  // before the result's arrays: the peak stays that of a solve
-    result.mean.resize(3 * n);
-    result.covariance.resize(9 * n);
-    for (std::size_t k = 0; k < n; ++k) {
-      for (int r = 0; r < 3; ++r) {
-        result.mean[3 * k + static_cast<std::size_t>(r)] = chain.mean(k)[r];
-        for (int c = 0; c < 3; ++c) result.covariance[9 * k + static_cast<std::size_t>(3 * r + c)] = chain.covariance(k)(r, c);
-      }
+    if (result.converged) break;
+  }
+  chain.release_workspace();  // before the result's arrays: the peak stays that of a solve
+  result.mean.resize(3 * n);
+  result.covariance.resize(9 * n);
+  for (std::size_t k = 0; k < n; ++k) {
+    for (int r = 0; r < 3; ++r) {
+      result.mean[3 * k + static_cast<std::size_t>(r)] = chain.mean(k)[r];
+      for (int c = 0; c < 3; ++c) result.covariance[9 * k + static_cast<std::size_t>(3 * r + c)] = chain.covariance(k)(r, c);
     }
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    result.mine_mean.assign(3 * k_mines, nan);
-    result.mine_covariance.assign(9 * k_mines, nan);
-    for (std::size_t i = 0; i < k_mines; ++i) {
-      if (!lin.mine_known[i]) continue;
-      const auto b = static_cast<Eigen::Index>(3 * i);
-      for (int r = 0; r < 3; ++r) {
-        result.mine_mean[3 * i + static_cast<std::size_t>(r)] = chain.static_mean()[b + r];
-        for (int c = 0; c < 3; ++c)
-          result.mine_covariance[9 * i + static_cast<std::size_t>(3 * r + c)] = chain.static_covariance()(b + r, b + c);
-      }
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  result.mine_mean.assign(3 * k_mines, nan);
+  result.mine_covariance.assign(9 * k_mines, nan);
+  for (std::size_t i = 0; i < k_mines; ++i) {
+    if (!lin.mine_known[i]) continue;
+    const auto b = static_cast<Eigen::Index>(3 * i);
+    for (int r = 0; r < 3; ++r) {
+      result.mine_mean[3 * i + static_cast<std::size_t>(r)] = chain.static_mean()[b + r];
+      for (int c = 0; c < 3; ++c)
+        result.mine_covariance[9 * i + static_cast<std::size_t>(3 * r + c)] = chain.static_covariance()(b + r, b + c);
     }
-    break;
   }
   return result;
 }

@@ -101,7 +101,8 @@ int import_marks(std::span<const std::string> args) {
   if (!parse_options(args, options, positional, v, "gesmi import marks FILE.csv --into MISSION.h5 [--map MAP.yaml] [--mines K] -o OUT.h5 [--skip-existing]"))
     return kExitOk;
   const std::string output = v["output"].as<std::string>();
-  io::OutputSet outputs(input_files(v, {"marks", "into", "map"}));
+  const auto file_options = {"marks", "into", "map"};  // the options naming files read
+  io::OutputSet outputs(input_files(v, file_options));
   outputs.check(output);
   const std::optional<int> mines = parse_mines(v);
   if (skipped_as_existing(v, "import marks", {output})) return kExitOk;
@@ -113,7 +114,7 @@ int import_marks(std::span<const std::string> args) {
   io::write_mission(m, output);
   outputs.commit();
   progress.finish();
-  return finish_import(v, "marks", {"marks", "into", "map"}, m, output);
+  return finish_import(v, "marks", file_options, m, output);
 }
 
 int import_nav(std::span<const std::string> args) {
@@ -145,7 +146,9 @@ int import_nav(std::span<const std::string> args) {
                      "[--skip-existing]"))
     return kExitOk;
   const std::string output = v["output"].as<std::string>();
-  io::OutputSet outputs(input_files(v, {"nav", "map", "gps", "marks", "marks-map", "config", "truth", "truth-mines"}));
+  // the options naming files read
+  const auto file_options = {"nav", "map", "gps", "marks", "marks-map", "config", "truth", "truth-mines"};
+  io::OutputSet outputs(input_files(v, file_options));
   outputs.check(output);
   io::ImportInputs inputs;
   inputs.map = optional_path(v, "map");
@@ -169,8 +172,7 @@ int import_nav(std::span<const std::string> args) {
   io::write_mission(m, output);
   outputs.commit();
   progress.finish();
-  return finish_import(v, "nav", {"nav", "map", "gps", "marks", "marks-map", "config", "truth", "truth-mines"}, m, output,
-                       notes);
+  return finish_import(v, "nav", file_options, m, output, notes);
 }
 
 int import_gesmi_txt(std::span<const std::string> args) {
@@ -195,7 +197,8 @@ int import_gesmi_txt(std::span<const std::string> args) {
   const std::string xy = v["xy"].as<std::string>();
   if (xy != "fixes" && xy != "truth") throw UsageError("--xy: expected fixes or truth, got " + io::quoted_input(xy));
   const std::string output = v["output"].as<std::string>();
-  io::OutputSet outputs(input_files(v, {"log", "marks", "config"}));
+  const auto file_options = {"log", "marks", "config"};  // the options naming files read
+  io::OutputSet outputs(input_files(v, file_options));
   outputs.check(output);
   io::ImportInputs inputs;
   inputs.marks = optional_path(v, "marks");
@@ -210,7 +213,7 @@ int import_gesmi_txt(std::span<const std::string> args) {
   io::write_mission(m, output);
   outputs.commit();
   progress.finish();
-  return finish_import(v, "gesmi-txt", {"log", "marks", "config"}, m, output);
+  return finish_import(v, "gesmi-txt", file_options, m, output);
 }
 
 int run_import(std::span<const std::string> args) {

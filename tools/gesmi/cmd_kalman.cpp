@@ -11,6 +11,7 @@
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/progress.h"
+#include "tools/gesmi/solve_arguments.h"
 #include "tools/gesmi/skip_existing.h"
 #include "io/imports/csv_number.h"
 #include "tools/gesmi/command_report.h"
@@ -51,7 +52,8 @@ int run_kalman(std::span<const std::string> args) {
   if (!std::isfinite(o.tolerance)) throw UsageError("--tolerance: must be finite");
   if (const std::string why = o.validate(); !why.empty()) throw UsageError("--noise-factor: " + why);
   const std::string output = v["output"].as<std::string>();
-  io::OutputSet outputs(input_files(v, {"mission", "config"}));
+  const auto file_options = {"mission", "config"};  // the options naming files read
+  io::OutputSet outputs(input_files(v, file_options));
   outputs.check(output);
   if (skipped_as_existing(v, "kalman", {output})) return kExitOk;
 
@@ -60,9 +62,7 @@ int run_kalman(std::span<const std::string> args) {
   progress.update(-1.0, "reading " + v["mission"].as<std::string>());
   auto start = Clock::now();
   Mission mission = io::read_mission(v["mission"].as<std::string>());
-  if (v.count("config"))
-    if (const auto notice = io::merge_model_config(mission, v["config"].as<std::string>()))
-      std::fprintf(stderr, "gesmi %s: note: %s\n", "kalman", notice->c_str());
+  apply_config(v, mission, "kalman");
   file.timings_ms["load"] = elapsed_ms(start);
   start = Clock::now();
   progress.update(-1.0, "smoothing (linearisations until no coordinate moves more than " + io::format_number(o.tolerance) +
@@ -92,8 +92,7 @@ int run_kalman(std::span<const std::string> args) {
                  k.iterations, io::format_number(k.last_step).c_str(), io::format_number(o.tolerance).c_str());
   CommandReport report("kalman", v);
   if (report.enabled()) {
-    report.input("mission", v["mission"].as<std::string>());
-    if (v.count("config")) report.input("config", v["config"].as<std::string>());
+    report.inputs(v, file_options);
     report.output(output);
     report.timings(file.timings_ms);
     report["kalman"] = {{"steps", mission.size()},

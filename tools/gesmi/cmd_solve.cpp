@@ -37,7 +37,8 @@ int run_solve(std::span<const std::string> args) {
   SolveOptions options = parse_solve_options(v);
   const std::string output = v["output"].as<std::string>(), mission_path = v["mission"].as<std::string>();
   const io::SolveSiblings siblings = parse_solve_siblings(v);
-  io::OutputSet outputs(input_files(v, {"mission", "config", "from"}));
+  const auto file_options = {"mission", "config", "from"};  // the options naming files read
+  io::OutputSet outputs(input_files(v, file_options));
   outputs.check(output);
   for (const std::string& sibling : io::solve_output_siblings(output)) {
     outputs.check(sibling);
@@ -52,9 +53,7 @@ int run_solve(std::span<const std::string> args) {
   auto start = Clock::now();
   // The solve never looks at the truth; only the envelope picture draws it.
   Mission mission = io::read_mission(mission_path, siblings.envelope_png ? io::TruthReading::read : io::TruthReading::skip);
-  if (v.count("config"))
-    if (const auto notice = io::merge_model_config(mission, v["config"].as<std::string>()))
-      std::fprintf(stderr, "gesmi %s: note: %s\n", "solve", notice->c_str());
+  apply_config(v, mission, "solve");
   apply_mine_count(v, mission);
   // Before the solve, not after it: a GeoJSON needs latitudes/longitudes the origin allows.
   if (siblings.geojson)
@@ -93,9 +92,7 @@ int run_solve(std::span<const std::string> args) {
   print_solve_notes(s);
   CommandReport report("solve", v);
   if (report.enabled()) {
-    report.input("mission", mission_path);
-    if (v.count("config")) report.input("config", v["config"].as<std::string>());
-    if (v.count("from")) report.input("from", v["from"].as<std::string>());
+    report.inputs(v, file_options);
     report.outputs(written);
     report.timings(timings);
     report["solve"] = io::solve_json(mission, s);

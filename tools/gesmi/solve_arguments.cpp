@@ -1,7 +1,9 @@
 #include "tools/gesmi/solve_arguments.h"
 
 #include <cmath>
+#include <cstdio>
 
+#include "io/files/mission_file.h"
 #include "solver/network/mission_network.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/command_report.h"
@@ -75,6 +77,12 @@ void apply_mine_count(const po::variables_map& v, Mission& mission) {
                      std::to_string(largest) + ")");
   if (k > kMaxMines) throw UsageError("--mines: at most " + std::to_string(kMaxMines) + " mines");
   mission.mine_count = static_cast<int>(k);
+}
+
+void apply_config(const po::variables_map& v, Mission& mission, std::string_view command) {
+  if (!v.count("config")) return;
+  if (const auto notice = io::merge_model_config(mission, v["config"].as<std::string>()))
+    std::fprintf(stderr, "gesmi %.*s: note: %s\n", static_cast<int>(command.size()), command.data(), notice->c_str());
 }
 
 }  // namespace gesmi::cli

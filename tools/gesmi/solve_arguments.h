@@ -22,4 +22,8 @@ io::SolveSiblings parse_solve_siblings(const boost::program_options::variables_m
 /// Applies --mines K to the mission (K above every mine number of the mark table).
 void apply_mine_count(const boost::program_options::variables_map& v, Mission& mission);
 
+/// --config (solve, kalman): merges the file into the mission's model and prints its
+/// notice, if any (the GPS bounds rule), as "gesmi COMMAND: note: ..." on stderr.
+void apply_config(const boost::program_options::variables_map& v, Mission& mission, std::string_view command);
+
 }  // namespace gesmi::cli

@@ -2,7 +2,6 @@
 // What `gesmi solve` prints about a solution: the candidate mines of marks without
 // a number, the outlier hypotheses and the one-line summary (--json: command_report.h).
 
-#include <map>
 #include <string>
 #include <vector>
 
