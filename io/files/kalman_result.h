@@ -1,8 +1,10 @@
 #pragma once
 // The Kalman smoother's result file (docs/formats.md): /time, /kalman/mean (N x 3),
 // /kalman/cov (N x 3 x 3), /kalman/mines/mean (K x 3), /kalman/mines/cov (K x 3 x 3),
-// and attributes (timings, options, containment on simulated missions, the sensor model
-// under /model, the origin, provenance and units: io/files/provenance.h).
+// the residual tests under /kalman/tests, the biases under /kalman/biases, and
+// attributes (timings, options, convergence, the chi-square check, containment on
+// simulated missions, the sensor model under /model, the origin, provenance and units:
+// io/files/provenance.h).
 
 #include <cstdint>
 #include <map>

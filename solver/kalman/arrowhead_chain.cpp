@@ -37,6 +37,29 @@ void ArrowheadChain::add_step(std::size_t k, const Mat3& w, const Vec3& delta) {
   eta_[k + 1] += w * delta;
 }
 
+void ArrowheadChain::add_position_row(std::size_t k, const Row3& hp, double z, double w) {
+  diag_[k] += w * hp.transpose() * hp;
+  eta_[k] += w * z * hp.transpose();
+}
+
+void ArrowheadChain::add_static(std::size_t j, double z, double w) {
+  const auto i = static_cast<Eigen::Index>(j);
+  d_(i, i) += w;
+  eta_m_[i] += w * z;
+}
+
+void ArrowheadChain::keep_cross_covariance_at(std::vector<std::size_t> steps) {
+  cross_at_.clear();
+  for (const std::size_t k : steps) cross_at_[k];  // filled by solve()
+}
+
+void ArrowheadChain::keep_cross_covariance_columns(std::size_t first, std::size_t count) {
+  if (first + count > q_) throw std::invalid_argument("ArrowheadChain: cross covariance columns beyond the static unknowns");
+  column_first_ = first;
+  column_count_ = count;
+  cross_columns_.assign(3 * count * n_, 0.0);
+}
+
 void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVectorXd& hm, double z, double w) {
   diag_[k] += w * hp.transpose() * hp;
   eta_[k] += w * z * hp.transpose();
@@ -173,6 +196,17 @@ void ArrowheadChain::solve() {
     }
     eta_[k] = p;
     diag_[k] = 0.5 * (cov + cov.transpose());
+    // X_k = alpha Z + beta B_e Sigma_mm (beta is zero before the first event).
+    if (column_count_ > 0) {
+      const auto first = static_cast<Eigen::Index>(column_first_), count = static_cast<Eigen::Index>(column_count_);
+      Eigen::Map<Eigen::Matrix<double, 3, Eigen::Dynamic>> x(cross_columns_.data() + 3 * column_count_ * k, 3, count);
+      x.noalias() = alpha * z.middleCols(first, count);
+      if (current >= 0) x.noalias() += beta * b_sigma[static_cast<std::size_t>(current)].middleCols(first, count);
+    }
+    if (const auto kept = cross_at_.find(k); kept != cross_at_.end()) {
+      kept->second = alpha * z;
+      if (current >= 0) kept->second += beta * b_sigma[static_cast<std::size_t>(current)];
+    }
   }
 }
 

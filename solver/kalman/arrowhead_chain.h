@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 #include <map>
+#include <stdexcept>
 #include <vector>
 
 namespace gesmi {
@@ -40,8 +41,19 @@ class ArrowheadChain {
   void add_position(std::size_t k, const Mat3& information, const Vec3& mean);
   /// p_{k+1} - p_k = delta with information W (the odometry between two samples).
   void add_step(std::size_t k, const Mat3& information, const Vec3& delta);
+  /// One scalar measurement z = hp . p_k with information w.
+  void add_position_row(std::size_t k, const Row3& hp, double z, double w);
   /// One scalar measurement z = hp . p_k + hm . m with information w (hm has q entries).
   void add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVectorXd& hm, double z, double w);
+  /// One scalar measurement z = m_j of static unknown j alone (a prior) with information w.
+  void add_static(std::size_t j, double z, double w);
+
+  /// Before solve(): also keep the cross covariance Cov(p_k, m) (3 x q) at these steps
+  /// (the residual tests of the measurements there need it) ...
+  void keep_cross_covariance_at(std::vector<std::size_t> steps);
+  /// ... and Cov(p_k, m_j) for j in [first, first + count) at every step (the biases,
+  /// which turn the positions relative to them back into positions).
+  void keep_cross_covariance_columns(std::size_t first, std::size_t count);
 
   /// Solves, once per set of factors (std::logic_error otherwise: the factors were
   /// overwritten); afterwards mean(k), covariance(k), static_mean(), static_covariance().
@@ -51,6 +63,13 @@ class ArrowheadChain {
   const Mat3& covariance(std::size_t k) const { return diag_[k]; }
   const VecX& static_mean() const { return m_mean_; }
   const MatX& static_covariance() const { return m_cov_; }
+  /// Cov(p_k, m) at a step given to keep_cross_covariance_at (std::out_of_range otherwise).
+  const MatX& cross_covariance_at(std::size_t k) const { return cross_at_.at(k); }
+  /// Cov(p_k, m_j), j in the columns given to keep_cross_covariance_columns: 3 x count.
+  Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>> cross_covariance_columns(std::size_t k) const {
+    const auto count = static_cast<Eigen::Index>(column_count_);
+    return {cross_columns_.data() + 3 * column_count_ * k, 3, count};
+  }
   std::size_t size() const { return n_; }
 
  private:
@@ -77,6 +96,9 @@ class ArrowheadChain {
   VecX m_mean_;
   MatX m_cov_;
   std::vector<Step> steps_;  // kept between solves
+  std::map<std::size_t, MatX> cross_at_;  // Cov(p_k, m) at the steps asked for
+  std::size_t column_first_ = 0, column_count_ = 0;
+  std::vector<double> cross_columns_;     // n x 3 x count, column-major per step
   bool solved_ = false;      // the factors were overwritten by a solve; reset() clears it
 };
 

@@ -13,11 +13,18 @@
 //
 // Noise from the interval bounds: a bound b becomes the variance factor * b^2 / 3, the
 // variance of a uniform law on [-b, b] (docs/comparison.md).
+//
+// With `biases`, nine constant sensor biases join the unknowns (heading; DVL scale and
+// offset per axis; depth scale and offset: kalman_measurements.h), each with a zero-mean prior of the
+// same variance from its bound; the white noise keeps its variance. Every run ends with
+// the consistency checks of kalman_consistency.h.
 
 #include <span>
 #include <string>
 #include <vector>
 
+#include "solver/kalman/kalman_consistency.h"
+#include "solver/kalman/kalman_measurements.h"
 #include "solver/mission/mission.h"
 #include "solver/network/mission_network.h"
 
@@ -30,6 +37,7 @@ struct KalmanOptions {
   /// default: solving the same system twice differs by up to 0.5 mm on a 6 km mission
   /// with two fixes (the chain's rounding), so a step below 0.1 mm may never come.
   double tolerance = 1e-3;
+  bool biases = false;  // the bias-aware variant
   std::string validate() const;
 };
 
@@ -42,6 +50,10 @@ struct KalmanResult {
   int iterations = 0;      // linearisations done
   double last_step = 0.0;  // m: the largest coordinate change of the last linearisation
   bool converged = false;  // last_step <= tolerance
+  bool biases = false;     // the bias-aware variant: the bias fields below are filled
+  BiasVec bias_estimate = BiasVec::Zero(), bias_sigma = BiasVec::Zero(), bias_prior_sigma = BiasVec::Zero();
+  KalmanConsistency consistency;
+  std::vector<InputTest> tests;  // every mark (table order) then every GPS fix
 };
 
 KalmanResult kalman_smooth(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,

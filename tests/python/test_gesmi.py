@@ -119,6 +119,27 @@ def test_outliers_diagnosis_kalman_and_localize(tmp_path):
     assert all(math.isfinite(x) for x in k.mean[:, 0])
 
 
+def test_kalman_checks_and_biases():
+    # The outlier mission's corrupted mark is flagged, with the other mark of the same mine
+    # only (two marks of one mine that disagree: leaving either out explains the other);
+    # the bias-aware variant reports its nine biases, each sigma within its prior's.
+    m = gesmi.simulate(seed=31, duration=3000, outliers=1)
+    k = gesmi.kalman(m)
+    flagged = [t for t in k.tests if t["flagged"]]
+    corrupted = list(m.truth_marks_outlier).index(1)
+    assert corrupted in [t["row"] for t in flagged if t["kind"] == "mark"]
+    assert {m.mark_mine[t["row"]] for t in flagged if t["kind"] == "mark"} == {m.mark_mine[corrupted]}
+    assert all(t["kind"] == "mark" for t in flagged)
+    c = k.consistency
+    assert c["band_low"] < 1.0 < c["band_high"] and c["dof"] > 0
+    assert c["consistent"] == (c["band_low"] <= c["chi2_per_dof"] <= c["band_high"])
+    assert not k.biases and k.bias_estimates == []
+    b = gesmi.kalman(gesmi.simulate(seed=2, duration=600), biases=True)
+    names = [x["name"] for x in b.bias_estimates]
+    assert names[0] == "heading" and names[-1] == "depth_offset" and len(names) == 9
+    assert all(0.0 < x["sigma"] <= x["prior_sigma"] * (1 + 1e-6) for x in b.bias_estimates)  # (the chain's rounding)
+
+
 def test_localize_a_scenario():
     scenario = os.path.join(os.path.dirname(__file__), "..", "..", "missions", "localization", "triangle_two_hypotheses.yaml")
     r = gesmi.localize(scenario)

@@ -15,6 +15,7 @@
 #include "tools/gesmi/skip_existing.h"
 #include "io/imports/csv_number.h"
 #include "tools/gesmi/command_report.h"
+#include "tools/gesmi/kalman_report.h"
 #include "io/report/report_json.h"
 
 namespace gesmi::cli {
@@ -35,13 +36,14 @@ int run_kalman(std::span<const std::string> args) {
       ("max-iterations", po::value<std::string>()->default_value("20"),
        "cap on the linearisations of the range measurements (1 to 100)")
       ("tolerance", po::value<std::string>()->default_value("0.001"),
-       "converged when a linearisation moves no position or mine coordinate more (m)");
+       "converged when a linearisation moves no position or mine coordinate more (m)")
+      ("biases", po::bool_switch(), "also estimate constant sensor biases (heading; DVL scale and offset per axis; depth scale and offset)");
   add_json_option(options, true);
   add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("mission", 1);
   po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--max-iterations N] [--tolerance T] [--json] [--skip-existing]"))
+  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--max-iterations N] [--tolerance T] [--biases] [--json] [--skip-existing]"))
     return kExitOk;
   KalmanOptions o;
   o.noise_factor = parse_double("--noise-factor", v["noise-factor"].as<std::string>());
@@ -50,6 +52,7 @@ int run_kalman(std::span<const std::string> args) {
   o.max_iterations = static_cast<int>(cap);
   o.tolerance = parse_non_negative("--tolerance", v["tolerance"].as<std::string>());
   if (!std::isfinite(o.tolerance)) throw UsageError("--tolerance: must be finite");
+  o.biases = v["biases"].as<bool>();
   if (const std::string why = o.validate(); !why.empty()) throw UsageError("--noise-factor: " + why);
   const std::string output = v["output"].as<std::string>();
   const auto file_options = {"mission", "config"};  // the options naming files read
@@ -102,7 +105,9 @@ int run_kalman(std::span<const std::string> args) {
                         {"iterations", file.result.iterations},
                         {"last_step_m", io::number_json(file.result.last_step)},
                         {"converged", file.result.converged},
-                        {"tolerance_m", o.tolerance}};
+                        {"tolerance_m", o.tolerance},
+                        {"biases", o.biases}};
+    add_kalman_checks(report["kalman"], file.result);
   } else {
     std::printf("kalman smoother: %zu steps in %.1f ms, %s after %d linearisations (last step %.2g m), written to %s",
                 mission.size(), file.timings_ms["smooth"], k.converged ? "converged" : "NOT converged", k.iterations,
@@ -110,6 +115,7 @@ int run_kalman(std::span<const std::string> args) {
     if (!std::isnan(c.trajectory))
       std::printf("; truth within 3 sigma: %.1f %% of steps, %.0f %% of mines", 100.0 * c.trajectory, 100.0 * c.mines);
     std::printf("\n");
+    print_kalman_checks(file.result);
   }
   return report.finish(kExitOk);
 }

@@ -29,23 +29,73 @@ void bind_kalman(py::module_& m) {
                              })
       .def_readonly("iterations", &KalmanResult::iterations)
       .def_readonly("last_step", &KalmanResult::last_step)
-      .def_readonly("converged", &KalmanResult::converged);
+      .def_readonly("converged", &KalmanResult::converged)
+      .def_property_readonly(
+          "consistency",
+          [](const KalmanResult& r) {
+            const KalmanConsistency& c = r.consistency;
+            py::dict d;
+            d["chi2"] = c.chi2;
+            d["dof"] = c.dof;
+            d["chi2_per_dof"] = c.chi2_per_dof;
+            d["band_low"] = c.band_low;
+            d["band_high"] = c.band_high;
+            d["consistent"] = c.consistent;
+            return d;
+          },
+          "chi-square of the fit per degree of freedom and its expected 95 % band")
+      .def_property_readonly(
+          "tests",
+          [](const KalmanResult& r) {
+            py::list out;
+            for (const InputTest& t : r.tests) {
+              py::dict d;
+              d["kind"] = t.input.kind == ConstraintRef::Kind::mark ? "mark" : "gps_fix";
+              d["row"] = t.input.row;
+              d["time"] = t.time;
+              d["dof"] = t.dof;
+              d["chi2"] = t.chi2;
+              d["max_normalised"] = t.max_normalised;
+              d["flagged"] = t.flagged;
+              out.append(d);
+            }
+            return out;
+          },
+          "residual test of each mark and GPS fix (leave-one-out chi-square; NaN: not testable)")
+      .def_readonly("biases", &KalmanResult::biases, "whether the biases were estimated")
+      .def_property_readonly(
+          "bias_estimates",
+          [](const KalmanResult& r) {
+            py::list out;
+            for (int b = 0; b < kBiasCount && r.biases; ++b) {
+              py::dict d;
+              d["name"] = std::string(bias_descriptions()[static_cast<std::size_t>(b)].name);
+              d["unit"] = std::string(bias_descriptions()[static_cast<std::size_t>(b)].unit);
+              d["estimate"] = r.bias_estimate[b];
+              d["sigma"] = r.bias_sigma[b];
+              d["prior_sigma"] = r.bias_prior_sigma[b];
+              out.append(d);
+            }
+            return out;
+          },
+          "the estimated sensor biases (empty without biases=True)");
   m.def(
       "kalman",
-      [](Mission& mission, double noise_factor, int max_iterations, double tolerance) {
+      [](Mission& mission, double noise_factor, int max_iterations, double tolerance, bool biases) {
         io::validate_mission(mission, "mission");
         io::fill_local_gps(mission, "mission");
         KalmanOptions o;
         o.noise_factor = noise_factor;
         o.max_iterations = max_iterations;
         o.tolerance = tolerance;
+        o.biases = biases;
         if (const std::string why = o.validate(); !why.empty()) throw io::FormatError("kalman: " + why);
         py::gil_scoped_release release;
         return kalman_smooth(mission, mission.model, gps_fixes(mission), o);
       },
       py::arg("mission"), py::arg("noise_factor") = 1.0, py::arg("max_iterations") = KalmanOptions{}.max_iterations,
-      py::arg("tolerance") = KalmanOptions{}.tolerance,
-      "The Kalman smoother baseline (EKF + RTS, as `gesmi kalman`)");
+      py::arg("tolerance") = KalmanOptions{}.tolerance, py::arg("biases") = false,
+      "The Kalman smoother baseline (EKF + RTS, as `gesmi kalman`; biases=True as `--biases`)");
   m.def(
       "three_sigma_containment",
       [](const KalmanResult& r, const Mission& mission) {

@@ -87,6 +87,8 @@ void bind_mission(py::module_& m) {
       .def_property_readonly("mark_range", [](const Mission& s) { return s.mark_range; })
       .def_property_readonly("mark_mine", [](const Mission& s) { return s.mark_mine; })
       .def_property_readonly("mark_side", [](const Mission& s) { return s.mark_side; })
+      .def_property_readonly("truth_marks_outlier", [](const Mission& s) { return s.truth_marks_outlier; },
+                             "1 for a mark whose range the simulator corrupted (empty without truth)")
       .def_readwrite("mine_count", &Mission::mine_count)
       .def_property(
           "origin", [](const Mission& s) { return py::make_tuple(s.origin.latitude, s.origin.longitude); },

@@ -93,6 +93,58 @@ TEST(ArrowheadChain, MatchesADenseLeastSquaresSolve) {
   EXPECT_THROW(b.chain.solve(), std::logic_error);
 }
 
+// Cross covariances Cov(p_k, m), kept at chosen steps and for chosen columns at every
+// step, against the dense inverse; with mixed factors at the first step, at every step of
+// a stretch (as the bias-aware smoother makes them), rows on one position and priors on
+// the static unknowns.
+TEST(ArrowheadChain, CrossCovariancesMatchTheDenseInverse) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const std::size_t n = 50, q = 7;
+  Both b(n, q);
+  for (std::size_t k = 0; k + 1 < n; ++k) b.step(k, random_spd(rng, 20.0), Vec3(u(rng), u(rng), u(rng)));
+  for (std::size_t k = 0; k < n; k += 9) b.position(k, random_spd(rng, 0.5), Vec3(u(rng), u(rng), u(rng)));
+  const auto mixed_row = [&](std::size_t k) {
+    Eigen::RowVectorXd hm = Eigen::RowVectorXd::Zero(q);
+    for (std::size_t i = 0; i < q; ++i) hm(static_cast<Eigen::Index>(i)) = u(rng);
+    b.mixed(k, Eigen::RowVector3d(u(rng), u(rng), u(rng)), hm, u(rng), 2.0 + u(rng));
+  };
+  mixed_row(0);
+  for (std::size_t k = 20; k < 30; ++k) mixed_row(k);
+  mixed_row(41);
+  for (std::size_t k = 3; k < n; k += 5) {  // one scalar row on a position
+    const Eigen::RowVector3d hp(u(rng), u(rng), u(rng));
+    const double z = u(rng), w = 4.0;
+    b.chain.add_position_row(k, hp, z, w);
+    b.lambda.block<3, 3>(b.p(k), b.p(k)) += w * hp.transpose() * hp;
+    b.eta.segment<3>(b.p(k)) += w * z * hp.transpose();
+  }
+  for (std::size_t j = 4; j < q; ++j) {  // priors on the last static unknowns
+    const double z = u(rng), w = 9.0;
+    b.chain.add_static(j, z, w);
+    b.lambda(b.m() + static_cast<Eigen::Index>(j), b.m() + static_cast<Eigen::Index>(j)) += w;
+    b.eta(b.m() + static_cast<Eigen::Index>(j)) += w * z;
+  }
+  const std::vector<std::size_t> kept = {0, 5, 20, 25, 29, 30, 41, 49};
+  b.chain.keep_cross_covariance_at(kept);
+  b.chain.keep_cross_covariance_columns(4, 3);
+  b.chain.solve();
+  const Eigen::LDLT<MatX> dense(b.lambda);
+  const VecX x = dense.solve(b.eta);
+  const MatX cov = dense.solve(MatX::Identity(b.lambda.rows(), b.lambda.cols()));
+  EXPECT_LT((b.chain.static_mean() - x.tail(q)).norm(), 1e-8);
+  for (std::size_t k = 0; k < n; ++k) {
+    EXPECT_LT((b.chain.mean(k) - x.segment<3>(b.p(k))).norm(), 1e-8) << k;
+    EXPECT_LT((b.chain.covariance(k) - cov.block<3, 3>(b.p(k), b.p(k))).norm(), 1e-8) << k;
+    const MatX cross = cov.block(b.p(k), b.m(), 3, static_cast<Eigen::Index>(q));
+    EXPECT_LT((MatX(b.chain.cross_covariance_columns(k)) - cross.rightCols(3)).norm(), 1e-8) << k;
+  }
+  for (const std::size_t k : kept)
+    EXPECT_LT((b.chain.cross_covariance_at(k) - cov.block(b.p(k), b.m(), 3, static_cast<Eigen::Index>(q))).norm(), 1e-8)
+        << k;
+  EXPECT_THROW(b.chain.cross_covariance_at(1), std::out_of_range);
+}
+
 // Textbook Kalman filter and RTS smoother for x(k+1) = x(k) + u(k) + w, y(k) = x(k) + v.
 TEST(ArrowheadChain, MatchesTheTextbookKalmanRtsSmoother) {
   std::mt19937_64 rng(7);

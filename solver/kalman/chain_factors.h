@@ -1,0 +1,68 @@
+#pragma once
+// The measurement model's factors (kalman_measurements.h) in the terms of the chain
+// solver (arrowhead_chain.h): positions p_k on the chain, and the static unknowns m =
+// (mines, biases). With biases, the chain carries p'_k = p_k - G_k b instead of p_k,
+// where G_k is the odometry's sensitivity to the biases summed from the start: the
+// odometry between the p' is then free of the biases (a chain factor), and each
+// measurement on p_k becomes one on p'_k and b (hp G_k), a mixed factor.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "solver/kalman/arrowhead_chain.h"
+#include "solver/kalman/kalman_measurements.h"
+
+namespace gesmi {
+
+class ChainFactors : public MeasurementSink {
+ public:
+  /// mines: the mine count; biases: whether the last kBiasCount static unknowns are the
+  /// biases, linearised at `bias_lin`.
+  ChainFactors(std::size_t steps, std::size_t mines, bool biases, const BiasVec& bias_lin);
+
+  std::size_t static_count() const { return static_count_; }
+  std::size_t bias_offset() const { return 3 * mines_; }  // the first bias among the static unknowns
+  bool biases() const { return biases_; }
+  /// G_k: p_k = p'_k + G_k b (zero without biases).
+  const BiasJacobian& sensitivity(std::size_t k) const { return g_[k]; }
+
+  void odometry(std::size_t k, const Mat3d& information, const Vec3d& delta, const BiasJacobian& jacobian) final;
+  void scalar(std::size_t k, const Eigen::RowVector3d& hp, int mine, const Eigen::RowVector3d& hm, const BiasRow& hb,
+              double z, double w, const ConstraintRef* source) final;
+
+ protected:
+  /// p'_{k+1} - p'_k = delta with information W.
+  virtual void chain_step(std::size_t k, const Mat3d& information, const Vec3d& delta) = 0;
+  /// z = hp . p'_k + hm . m with information w; hm empty when it would be zero.
+  virtual void chain_row(std::size_t k, const Eigen::RowVector3d& hp, const Eigen::RowVectorXd& hm, double z, double w,
+                         const ConstraintRef* source) = 0;
+
+ private:
+  std::size_t mines_, static_count_;
+  bool biases_;
+  BiasVec bias_lin_;
+  std::vector<BiasJacobian> g_;  // per step, with biases only (one entry otherwise)
+  Eigen::RowVectorXd hm_;        // reused
+};
+
+/// Adds the factors to a chain.
+class ChainBuilder final : public ChainFactors {
+ public:
+  ChainBuilder(ArrowheadChain& chain, std::size_t mines, bool biases, const BiasVec& bias_lin)
+      : ChainFactors(chain.size(), mines, biases, bias_lin), chain_(chain) {}
+
+ private:
+  void chain_step(std::size_t k, const Mat3d& information, const Vec3d& delta) override {
+    chain_.add_step(k, information, delta);
+  }
+  void chain_row(std::size_t k, const Eigen::RowVector3d& hp, const Eigen::RowVectorXd& hm, double z, double w,
+                 const ConstraintRef*) override {
+    if (hm.size() == 0)
+      chain_.add_position_row(k, hp, z, w);
+    else
+      chain_.add_mixed(k, hp, hm, z, w);
+  }
+  ArrowheadChain& chain_;
+};
+
+}  // namespace gesmi
