@@ -90,6 +90,7 @@ void linearise_measurements(const Mission& m, const SensorModel& model, std::spa
     }
     sink.odometry(k, cov.inverse(), delta, jacobian);
   }
+  if (o.odometry_only) return;
   const Eigen::RowVector3d ex(1.0, 0.0, 0.0), ey(0.0, 1.0, 0.0), ez(0.0, 0.0, 1.0), none = Eigen::RowVector3d::Zero();
   // Depth at every step. The bound grows with the depth: evaluated at the reading it
   // would weigh readings that erred deep less than those that erred shallow (a 0.3 m

@@ -65,6 +65,7 @@ class MeasurementSink {
 struct MeasurementOptions {
   double noise_factor = 1.0;
   bool biases = false;  // compute the bias terms (zero otherwise)
+  bool odometry_only = false;  // the odometry steps alone (a dead reckoning)
 };
 
 /// Generates the factors at `lin`; places a mine not yet placed at its first

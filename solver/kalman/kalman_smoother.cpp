@@ -77,7 +77,7 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     } dead_reckoning(lin.position);
     lin.mine.assign(k_mines, Vec3d::Zero());
     lin.mine_known.assign(k_mines, 0);
-    linearise_measurements(m, model, {}, {o.noise_factor, false}, lin, dead_reckoning);
+    linearise_measurements(m, model, {}, {o.noise_factor, false, true}, lin, dead_reckoning);
   }
   lin.mine.assign(k_mines, Vec3d::Zero());  // placed at their first detection in the first pass
   lin.mine_known.assign(k_mines, 0);

@@ -25,17 +25,25 @@ double true_sway(double t) { return 0.04 * std::sin(kTwoPi * t / 37.0); }
 double true_heave(double t) { return 0.02 * std::sin(kTwoPi * t / 53.0); }
 
 // Reading errors strictly inside their bounds: uniform, a bias at 99 % of the
-// bound with a sign fixed per sensor (worst case), or at 99 % of the bound against
-// `change`, how the true value moves over the coming step (at samples).
+// bound with a sign fixed per sensor (worst case), at 99 % of the bound against
+// `change`, how the true value moves over the coming step (at samples), or a slow
+// sinusoid of amplitude 99 % of the bound at time t (drifting).
 class Errors {
  public:
   enum Sensor { roll, pitch, heading, vx, vy, vz, depth, altitude, gps_north, gps_east, mark, count };
   Errors(RandomSource& rng, SimulatedErrors mode) : rng_(rng), mode_(mode) {
     for (double& s : signs_) s = rng_.sign();
+    // Drawn only in this mode, so the other modes keep their random sequence.
+    if (mode_ == SimulatedErrors::drifting)
+      for (int s = 0; s < count; ++s) {
+        periods_[s] = rng_.uniform(600.0, 2400.0);
+        phases_[s] = rng_.uniform(0.0, kTwoPi);
+      }
   }
-  double operator()(Sensor sensor, double bound, double change = 0.0) {
+  double operator()(Sensor sensor, double bound, double t, double change = 0.0) {
     if (mode_ == SimulatedErrors::worst_case) return 0.99 * bound * signs_[sensor];
     if (mode_ == SimulatedErrors::at_samples && change != 0.0) return -0.99 * bound * (change > 0.0 ? 1.0 : -1.0);
+    if (mode_ == SimulatedErrors::drifting) return 0.99 * bound * std::sin(kTwoPi * t / periods_[sensor] + phases_[sensor]);
     return 0.99 * bound * rng_.uniform(-1.0, 1.0);
   }
 
@@ -43,6 +51,8 @@ class Errors {
   RandomSource& rng_;
   SimulatedErrors mode_;
   double signs_[count];
+  double periods_[count] = {};
+  double phases_[count] = {};
 };
 
 struct TruthState {
@@ -146,12 +156,14 @@ const char* simulated_errors_name(SimulatedErrors errors) {
     case SimulatedErrors::uniform: return "uniform";
     case SimulatedErrors::worst_case: return "worst-case";
     case SimulatedErrors::at_samples: return "at-samples";
+    case SimulatedErrors::drifting: return "drifting";
   }
   return "uniform";
 }
 
 bool parse_simulated_errors(std::string_view name, SimulatedErrors& errors) {
-  for (const SimulatedErrors e : {SimulatedErrors::uniform, SimulatedErrors::worst_case, SimulatedErrors::at_samples})
+  for (const SimulatedErrors e :
+       {SimulatedErrors::uniform, SimulatedErrors::worst_case, SimulatedErrors::at_samples, SimulatedErrors::drifting})
     if (name == simulated_errors_name(e)) {
       errors = e;
       return true;
@@ -212,21 +224,22 @@ Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
     const double roll = true_roll(t);
     const Vec3d v_body(at_sample.speed, true_sway(t), true_heave(t));
     // Readings.
-    m.roll[k] = roll + error(Errors::roll, model.roll, true_roll(t + dt) - roll);
-    m.pitch[k] = at_sample.pitch + error(Errors::pitch, model.pitch, rates.pitch);
-    m.heading[k] = wrap(at_sample.heading + error(Errors::heading, model.heading, rates.turn));
+    m.roll[k] = roll + error(Errors::roll, model.roll, t, true_roll(t + dt) - roll);
+    m.pitch[k] = at_sample.pitch + error(Errors::pitch, model.pitch, t, rates.pitch);
+    m.heading[k] = wrap(at_sample.heading + error(Errors::heading, model.heading, t, rates.turn));
     const auto dvl = [&](Errors::Sensor sensor, double v, double change) {
       // |error| <= (a|v| + b) / (1 + a) keeps v inside reading ± (a|reading| + b).
-      return v + error(sensor, (model.dvl_relative * std::fabs(v) + model.dvl_absolute) / (1.0 + model.dvl_relative), change);
+      const double bound = (model.dvl_relative * std::fabs(v) + model.dvl_absolute) / (1.0 + model.dvl_relative);
+      return v + error(sensor, bound, t, change);
     };
     m.vx[k] = dvl(Errors::vx, v_body[0], rates.speed);
     m.vy[k] = dvl(Errors::vy, v_body[1], true_sway(t + dt) - v_body[1]);
     m.vz[k] = dvl(Errors::vz, v_body[2], true_heave(t + dt) - v_body[2]);
     m.depth[k] = at_sample.p[2] + error(Errors::depth, (model.depth_absolute + model.depth_relative * std::fabs(at_sample.p[2])) /
                                                            (1.0 + model.depth_relative),
-                                        s.p[2] - at_sample.p[2]);
+                                        t, s.p[2] - at_sample.p[2]);
     const double altitude = sea_floor_depth(at_sample.p[0], at_sample.p[1]) - at_sample.p[2];
-    m.altitude[k] = altitude + error(Errors::altitude, model.altitude,
+    m.altitude[k] = altitude + error(Errors::altitude, model.altitude, t,
                                      sea_floor_depth(s.p[0], s.p[1]) - s.p[2] - altitude);
 
     // Sonar plane crossings (starboard, below, within range).
@@ -261,7 +274,7 @@ Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
     }
     m.mark_time.push_back(c.time);
     m.mark_mine.push_back(rng.chance(o.unassociated) ? -1 : c.mine);
-    m.mark_range.push_back(c.range + error(Errors::mark, model.mark_range));
+    m.mark_range.push_back(c.range + error(Errors::mark, model.mark_range, c.time));
     m.mark_side.push_back(1);
     m.truth_marks_outlier.push_back(0);
     m.truth_marks_mine.push_back(c.mine);
@@ -279,8 +292,8 @@ Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
   // GPS at the start and the end, in the local frame.
   for (const std::size_t k : {std::size_t{0}, n - 1}) {
     m.gps_time.push_back(m.time[k]);
-    m.gps_north.push_back(m.truth_x[k] + error(Errors::gps_north, model.gps_metres));
-    m.gps_east.push_back(m.truth_y[k] + error(Errors::gps_east, model.gps_metres));
+    m.gps_north.push_back(m.truth_x[k] + error(Errors::gps_north, model.gps_metres, m.time[k]));
+    m.gps_east.push_back(m.truth_y[k] + error(Errors::gps_east, model.gps_metres, m.time[k]));
     // Boxes of the metric bound, usable in memory; io/ recomputes them from the
     // longitudes and latitudes when the mission is written and read back.
     m.gps_north_halfwidth.push_back(model.gps_metres);

@@ -22,7 +22,7 @@ namespace {
 namespace po = boost::program_options;
 
 constexpr const char* kUsage =
-    "gesmi simulate --preset redermor --seed S -o MISSION.h5 [--errors uniform|worst-case|at-samples] [--duration T] "
+    "gesmi simulate --preset redermor --seed S -o MISSION.h5 [--errors uniform|worst-case|at-samples|drifting] [--duration T] "
     "[--rate HZ] [--mines K] [--missed P] [--unassociated P] [--outliers N] [--config bounds.yaml] [--skip-existing]";
 
 int run_simulate(std::span<const std::string> args) {
@@ -31,7 +31,10 @@ int run_simulate(std::span<const std::string> args) {
       ("preset", po::value<std::string>()->default_value("redermor"), "mission preset (redermor)")
       ("seed", po::value<std::string>()->required(), "random seed (integer >= 0)")
       ("output,o", po::value<std::string>()->required(), "mission file to write (HDF5)")
-      ("errors", po::value<std::string>()->default_value("uniform"), "uniform, worst-case, or at-samples (at the ends of the bounds, against the motion: boxes hold at the sample instants only)")
+      ("errors", po::value<std::string>()->default_value("uniform"),
+       "uniform, worst-case (a bias at 99 % of each bound), at-samples (at the ends of the bounds, against the motion: "
+       "boxes hold at the sample instants only), or drifting (each sensor's error 0.99 x bound x sin(2 pi t / T + phase), T drawn "
+       "in [600, 2400] s and the phase from the seed: inside the bounds, but not a constant bias)")
       ("duration", po::value<std::string>()->default_value("5999.4"), "mission length (s)")
       ("rate", po::value<std::string>()->default_value("10"), "sampling rate (Hz)")
       ("mines", po::value<std::string>()->default_value("6"), "number of mines (0..64)")
@@ -51,7 +54,7 @@ int run_simulate(std::span<const std::string> args) {
   o.seed = static_cast<std::uint64_t>(seed);
   const std::string errors = v["errors"].as<std::string>();
   if (!parse_simulated_errors(errors, o.errors))
-    throw UsageError("--errors: expected uniform, worst-case or at-samples, got " + io::quoted_input(errors));
+    throw UsageError("--errors: expected uniform, worst-case, at-samples or drifting, got " + io::quoted_input(errors));
   o.duration = parse_double("--duration", v["duration"].as<std::string>());
   o.rate = parse_double("--rate", v["rate"].as<std::string>());
   o.mines = static_cast<int>(parse_integer("--mines", v["mines"].as<std::string>()));
