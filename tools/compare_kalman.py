@@ -183,8 +183,8 @@ def main():
     result = read(args.result, ["/time", "/tube/lower", "/tube/upper", "/mines/lower", "/mines/upper", "/marks/outlier",
                                 "/gps/outlier", "@status", "@mode", "@inconsistency", "@minimal_outliers", "@sweeps"])
     kalman = read(args.kalman, ["/time", "/kalman/mean", "/kalman/cov", "/kalman/mines/mean", "/kalman/mines/cov",
-                                "@iterations", "@converged", "@biases", "@containment_3sigma_trajectory",
-                                "@containment_3sigma_mines", "@chi2", "@chi2_dof", "@chi2_per_dof",
+                                "@iterations", "@converged", "@biases", "@containment_3sigma_horizontal",
+                                "@containment_3sigma_vertical", "@containment_mines", "@containment_mines_plane", "@chi2", "@chi2_dof", "@chi2_per_dof",
                                 "@chi2_band_low", "@chi2_band_high", "@chi2_band_probability", "@chi2_consistent",
                                 "@test_probability",
                                 "@flagged_fixes", "@flagged_marks", "/kalman/tests/kind", "/kalman/tests/row",
@@ -380,9 +380,9 @@ def main():
     else:
         kal["chi2"] = None
     kal["test_probability"] = attr("test_probability")
-    # gesmi kalman's own summary: per axis on all three axes, mines included (not the tests above).
-    kal["recorded_per_axis_3d"] = {"trajectory": attr("containment_3sigma_trajectory"),
-                                   "mines": attr("containment_3sigma_mines")}
+    # gesmi kalman's own figures, by the same definitions as this report's (NaN: no truth).
+    kal["recorded"] = {name: attr("containment_" + name) for name in
+                       ["3sigma_horizontal", "3sigma_vertical", "mines", "mines_plane"]}
     tests = None
     if kalman["/kalman/tests/kind"] is not None:
         tests = [{"kind": "fix" if kd == 0 else "mark", "row": int(rw), "time": float(tm), "chi2": number(c2),
@@ -499,10 +499,11 @@ def main():
         lines.append(f"- Kalman leave-one-out tests: {len(tests)} inputs, {testable} testable (not: a mine's only mark), "
                      f"{len(kal['flagged'])} flagged "
                      f"(χ² above its {fmt(100 * level if level else None, 2)} % quantile)")
-    rec = kal["recorded_per_axis_3d"]
-    if rec["trajectory"] is not None or rec["mines"] is not None:
-        lines.append(f"- `gesmi kalman`'s own summary in the file (per axis on all three axes, mines too): trajectory "
-                     f"{pct(rec['trajectory'])}, mines {pct(rec['mines'])}")
+    rec = kal["recorded"]
+    if any(x is not None for x in rec.values()):
+        lines.append(f"- `gesmi kalman`'s own figures in the file: truth within 3σ horizontally "
+                     f"{pct(rec['3sigma_horizontal'])}, vertically {pct(rec['3sigma_vertical'])}; mines inside their "
+                     f"99.73 % region {pct(rec['mines'])} (3-D), {pct(rec['mines_plane'])} (plane)")
     lines.append("- interval: " + (diagnosis if not consistent else f"consistent ({itv['mode']})")
                  + ("; removed by every outlier hypothesis: "
                     + ", ".join(f"{a} {b}" for a, b in itv["removed_by_every_hypothesis"])

@@ -108,8 +108,10 @@ void write_kalman_result(const KalmanFile& k, const std::string& path) {
     f.set_attribute("/", "tolerance_m", k.options.tolerance);
     f.set_attribute("/", "last_step_m", r.last_step);
     f.set_attribute("/", "converged", static_cast<std::int64_t>(r.converged));
-    f.set_attribute("/", "containment_3sigma_trajectory", k.containment_trajectory);
-    f.set_attribute("/", "containment_3sigma_mines", k.containment_mines);
+    f.set_attribute("/", "containment_3sigma_horizontal", k.containment.horizontal);
+    f.set_attribute("/", "containment_3sigma_vertical", k.containment.vertical);
+    f.set_attribute("/", "containment_mines", k.containment.mines);
+    f.set_attribute("/", "containment_mines_plane", k.containment.mines_plane);
     for (const auto& [name, ms] : k.timings_ms) f.set_attribute("/", "timing_" + name + "_ms", ms);
     write_tests(f, r);
     write_biases(f, r);

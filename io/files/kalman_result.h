@@ -22,7 +22,7 @@ struct KalmanFile {
   KalmanResult result;
   KalmanOptions options;
   std::map<std::string, double> timings_ms;
-  double containment_trajectory = 0.0, containment_mines = 0.0;  // NaN without truth
+  Containment containment;  // where the truth lies (simulated missions; NaN without truth)
   std::optional<std::int64_t> epoch;  // the mission's UTC epoch of t = 0, when it has one
   GeoOrigin origin;                   // the mission's local frame origin (WGS84)
   SensorModel model;                  // the bounds the noise variances come from

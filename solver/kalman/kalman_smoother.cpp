@@ -1,5 +1,6 @@
 #include "solver/kalman/kalman_smoother.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <cmath>
 #include <limits>
@@ -164,27 +165,35 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
 }
 
 Containment three_sigma_containment(const KalmanResult& r, const Mission& m) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (!m.has_truth()) return {nan, nan, nan, nan};
   Containment c;
-  if (!m.has_truth()) return {std::nan(""), std::nan("")};
-  std::size_t inside = 0;
+  std::size_t horizontal = 0, vertical = 0;
   const double* truth[3] = {m.truth_x.data(), m.truth_y.data(), m.truth_z.data()};
+  const auto within = [&](std::size_t k, std::size_t a) {
+    return std::fabs(truth[a][k] - r.mean[3 * k + a]) <= 3.0 * std::sqrt(r.covariance[9 * k + 4 * a]);
+  };
   for (std::size_t k = 0; k < r.steps; ++k) {
-    bool in = true;
-    for (std::size_t a = 0; a < 3; ++a)
-      in = in && std::fabs(truth[a][k] - r.mean[3 * k + a]) <= 3.0 * std::sqrt(r.covariance[9 * k + 4 * a]);
-    inside += in;
+    horizontal += within(k, 0) && within(k, 1);
+    vertical += within(k, 2);
   }
-  c.trajectory = static_cast<double>(inside) / static_cast<double>(r.steps);
-  std::size_t mines_inside = 0, mines_seen = 0;
+  c.horizontal = static_cast<double>(horizontal) / static_cast<double>(r.steps);
+  c.vertical = static_cast<double>(vertical) / static_cast<double>(r.steps);
+  const double limit_3d = chi_square_quantile(3.0, kResidualTestProbability);
+  const double limit_plane = chi_square_quantile(2.0, kResidualTestProbability);
+  std::size_t inside = 0, inside_plane = 0, seen = 0;
   for (std::size_t i = 0; i < r.mines && 3 * i + 2 < m.truth_mines.size(); ++i) {
     if (std::isnan(r.mine_mean[3 * i])) continue;
-    ++mines_seen;
-    bool in = true;
-    for (std::size_t a = 0; a < 3; ++a)
-      in = in && std::fabs(m.truth_mines[3 * i + a] - r.mine_mean[3 * i + a]) <= 3.0 * std::sqrt(r.mine_covariance[9 * i + 4 * a]);
-    mines_inside += in;
+    ++seen;
+    const Vec3d e(m.truth_mines[3 * i] - r.mine_mean[3 * i], m.truth_mines[3 * i + 1] - r.mine_mean[3 * i + 1],
+                  m.truth_mines[3 * i + 2] - r.mine_mean[3 * i + 2]);
+    const Mat3d cov = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(&r.mine_covariance[9 * i]);
+    inside += e.dot(cov.ldlt().solve(e)) <= limit_3d;
+    const Eigen::Vector2d e2 = e.head<2>();
+    inside_plane += e2.dot(cov.topLeftCorner<2, 2>().ldlt().solve(e2)) <= limit_plane;
   }
-  c.mines = mines_seen ? static_cast<double>(mines_inside) / static_cast<double>(mines_seen) : std::nan("");
+  c.mines = seen ? static_cast<double>(inside) / static_cast<double>(seen) : nan;
+  c.mines_plane = seen ? static_cast<double>(inside_plane) / static_cast<double>(seen) : nan;
   return c;
 }
 

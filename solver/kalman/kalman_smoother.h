@@ -59,10 +59,14 @@ struct KalmanResult {
 KalmanResult kalman_smooth(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
                            const KalmanOptions& options = {});
 
-/// Fraction of steps whose true position lies within 3 sigma on every axis, and the
-/// same for the mines (simulated missions); NaN without truth.
+/// Where the truth of a simulated mission lies (NaN without truth): the fraction of
+/// steps whose true position is within 3 sigma on north and on east (horizontal), and
+/// on down (vertical); and the fraction of detected mines inside the region of
+/// probability kResidualTestProbability (0.9973, as 3 sigma on one axis) of their 3-D
+/// Gaussian, and of its north-east marginal (the plane): d^2 = e^T C^-1 e below the
+/// chi-square quantile with 3 (14.16) and 2 (11.83) degrees of freedom.
 struct Containment {
-  double trajectory = 0.0, mines = 0.0;
+  double horizontal = 0.0, vertical = 0.0, mines = 0.0, mines_plane = 0.0;
 };
 Containment three_sigma_containment(const KalmanResult& result, const Mission& mission);
 

@@ -22,7 +22,7 @@ TEST(CmdKalman, WritesTheDocumentedDatasetsAndStats) {
   const CommandResult r = run_gesmi({"kalman", dir + "/m.h5", "-o", dir + "/k.h5", "--stats"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"timings_ms\""), std::string::npos);
-  EXPECT_NE(r.out.find("\"containment_3sigma_trajectory\""), std::string::npos);
+  EXPECT_NE(r.out.find("\"containment_3sigma_horizontal\""), std::string::npos);
   const io::H5File f = io::H5File::open_read(dir + "/k.h5");
   const io::H5Shape mean = f.shape("/kalman/mean");
   EXPECT_EQ(mean.rows, 12001u);

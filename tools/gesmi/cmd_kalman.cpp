@@ -73,8 +73,7 @@ int run_kalman(std::span<const std::string> args) {
   file.result = kalman_smooth(mission, mission.model, gps_fixes(mission), o);
   file.timings_ms["smooth"] = elapsed_ms(start);
   const Containment c = three_sigma_containment(file.result, mission);
-  file.containment_trajectory = c.trajectory;
-  file.containment_mines = c.mines;
+  file.containment = c;
   file.time = mission.time;
   file.epoch = mission.epoch;
   file.origin = mission.origin;
@@ -100,8 +99,10 @@ int run_kalman(std::span<const std::string> args) {
     report.timings(file.timings_ms);
     report["kalman"] = {{"steps", mission.size()},
                         {"mines", mission.mine_count},
-                        {"containment_3sigma_trajectory", io::number_json(c.trajectory)},
-                        {"containment_3sigma_mines", io::number_json(c.mines)},
+                        {"containment_3sigma_horizontal", io::number_json(c.horizontal)},
+                        {"containment_3sigma_vertical", io::number_json(c.vertical)},
+                        {"containment_mines", io::number_json(c.mines)},
+                        {"containment_mines_plane", io::number_json(c.mines_plane)},
                         {"iterations", file.result.iterations},
                         {"last_step_m", io::number_json(file.result.last_step)},
                         {"converged", file.result.converged},
@@ -112,8 +113,10 @@ int run_kalman(std::span<const std::string> args) {
     std::printf("kalman smoother: %zu steps in %.1f ms, %s after %d linearisations (last step %.2g m), written to %s",
                 mission.size(), file.timings_ms["smooth"], k.converged ? "converged" : "NOT converged", k.iterations,
                 k.last_step, output.c_str());
-    if (!std::isnan(c.trajectory))
-      std::printf("; truth within 3 sigma: %.1f %% of steps, %.0f %% of mines", 100.0 * c.trajectory, 100.0 * c.mines);
+    if (!std::isnan(c.horizontal))
+      std::printf("; truth within 3 sigma: horizontal %.1f %%, vertical %.1f %% of steps; inside the 99.73 %% region: "
+                  "%.0f %% of mines (3-D), %.0f %% (plane)",
+                  100.0 * c.horizontal, 100.0 * c.vertical, 100.0 * c.mines, 100.0 * c.mines_plane);
     std::printf("\n");
     print_kalman_checks(file.result);
   }

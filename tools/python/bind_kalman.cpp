@@ -100,9 +100,16 @@ void bind_kalman(py::module_& m) {
       "three_sigma_containment",
       [](const KalmanResult& r, const Mission& mission) {
         const Containment c = three_sigma_containment(r, mission);
-        return py::make_tuple(c.trajectory, c.mines);
+        py::dict d;
+        d["horizontal"] = c.horizontal;
+        d["vertical"] = c.vertical;
+        d["mines"] = c.mines;
+        d["mines_plane"] = c.mines_plane;
+        return d;
       },
-      py::arg("result"), py::arg("mission"), "Fractions of steps and mines whose truth lies within 3 sigma (NaN without truth)");
+      py::arg("result"), py::arg("mission"),
+      "Where the truth lies: fractions of steps within 3 sigma (horizontal: north and east; vertical), and of mines "
+      "inside their 99.73 % region in 3-D and in the plane (NaN without truth)");
 }
 
 }  // namespace gesmi::python

@@ -133,7 +133,7 @@ void bind_mission(py::module_& m) {
         SimulationOptions o;
         o.seed = seed;
         if (!parse_simulated_errors(errors, o.errors))
-          throw io::FormatError("simulate: errors: expected uniform, worst-case or at-samples");
+          throw io::FormatError("simulate: errors: expected uniform, worst-case, at-samples or drifting");
         o.duration = duration;
         o.rate = rate;
         o.mines = mines;
