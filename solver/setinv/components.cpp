@@ -4,25 +4,10 @@
 #include <cmath>
 #include <numeric>
 
+#include "solver/setinv/detail/union_find.h"
+
 namespace gesmi {
 namespace {
-
-class UnionFind {
- public:
-  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::size_t{0}); }
-  std::size_t find(std::size_t i) {
-    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
-    return i;
-  }
-  void unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<std::size_t> parent_;
-};
 
 bool touch_1d(const Interval& a, const Interval& b) { return a.lo() <= b.hi() && b.lo() <= a.hi(); }
 
@@ -75,8 +60,9 @@ Interval wrapped_hull(const std::vector<Interval>& arcs, double period, double o
   return Interval(lo - shift, hi - shift);
 }
 
-std::vector<PavingComponent> connected_components(const Paving& inner, const Paving& boundary,
-                                                  const ComponentOptions& options) {
+void for_each_touching_pair(const Paving& inner, const Paving& boundary, const ComponentOptions& options,
+                            const std::function<void(std::size_t, std::size_t)>& touching,
+                            const std::function<bool(std::size_t, std::size_t)>& skip) {
   const std::size_t n_inner = inner.size(), n = n_inner + boundary.size();
   const std::size_t dim = std::max(inner.dim(), boundary.dim());
   const auto box = [&](std::size_t i) { return i < n_inner ? inner.box(i) : boundary.box(i - n_inner); };
@@ -86,30 +72,37 @@ std::vector<PavingComponent> connected_components(const Paving& inner, const Pav
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return box(a)[sweep].lo() < box(b)[sweep].lo(); });
-  UnionFind uf(n);
   std::vector<std::size_t> active;
   for (std::size_t i : order) {
     const auto bi = box(i);
     std::erase_if(active, [&](std::size_t j) { return box(j)[sweep].hi() < bi[sweep].lo(); });
     for (std::size_t j : active) {
-      if (uf.find(i) == uf.find(j)) continue;
+      if (skip && skip(i, j)) continue;
       const auto bj = box(j);
       bool touch = true;
       for (std::size_t k = 0; k < dim && touch; ++k)
         touch = static_cast<int>(k) == pd ? touch_periodic(bi[k], bj[k], options) : touch_1d(bi[k], bj[k]);
-      if (touch) uf.unite(i, j);
+      if (touch) touching(std::min(i, j), std::max(i, j));
     }
     active.push_back(i);
   }
+}
+
+std::vector<PavingComponent> components_from_labels(const Paving& inner, const Paving& boundary,
+                                                    std::span<const std::size_t> label, const ComponentOptions& options) {
+  const std::size_t n_inner = inner.size(), n = n_inner + boundary.size();
+  const std::size_t dim = std::max(inner.dim(), boundary.dim());
+  const auto box = [&](std::size_t i) { return i < n_inner ? inner.box(i) : boundary.box(i - n_inner); };
+  const int pd = options.periodic_dimension;
   std::vector<PavingComponent> components;
-  std::vector<std::size_t> index_of_root(n, n);
+  std::vector<std::size_t> index_of_label(n, n);
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t r = uf.find(i);
-    if (index_of_root[r] == n) {
-      index_of_root[r] = components.size();
+    const std::size_t r = label[i];
+    if (index_of_label[r] == n) {
+      index_of_label[r] = components.size();
       components.emplace_back();
     }
-    PavingComponent& c = components[index_of_root[r]];
+    PavingComponent& c = components[index_of_label[r]];
     if (i < n_inner) {
       c.inner.push_back(i);
       c.inner_volume += box_volume(box(i));
@@ -135,6 +128,18 @@ std::vector<PavingComponent> connected_components(const Paving& inner, const Pav
     return a.inner.size() > b.inner.size();
   });
   return components;
+}
+
+std::vector<PavingComponent> connected_components(const Paving& inner, const Paving& boundary,
+                                                  const ComponentOptions& options) {
+  const std::size_t n = inner.size() + boundary.size();
+  detail::UnionFind uf(n);
+  for_each_touching_pair(
+      inner, boundary, options, [&](std::size_t a, std::size_t b) { uf.unite(a, b); },
+      [&](std::size_t a, std::size_t b) { return uf.find(a) == uf.find(b); });  // joined already: skip the test
+  std::vector<std::size_t> label(n);
+  for (std::size_t i = 0; i < n; ++i) label[i] = uf.find(i);
+  return components_from_labels(inner, boundary, label, options);
 }
 
 }  // namespace gesmi

@@ -6,6 +6,8 @@
 // hypothesis (seed 002 section 4, seed 004 section IV).
 
 #include <cstddef>
+#include <functional>
+#include <span>
 #include <vector>
 
 #include "solver/setinv/paving.h"
@@ -37,6 +39,18 @@ struct PavingComponent {
 /// Components, largest total volume first (ties: more inner boxes first).
 std::vector<PavingComponent> connected_components(const Paving& inner, const Paving& boundary,
                                                   const ComponentOptions& options = {});
+
+/// Boxes are numbered inner first, then boundary. Calls `touching(i, j)`, i < j, for
+/// every pair of boxes that touch (across the period too), except pairs for which
+/// `skip(i, j)` (optional) returns true before the test.
+void for_each_touching_pair(const Paving& inner, const Paving& boundary, const ComponentOptions& options,
+                            const std::function<void(std::size_t, std::size_t)>& touching,
+                            const std::function<bool(std::size_t, std::size_t)>& skip = {});
+
+/// The components given by a label per box (same numbering; labels below the number
+/// of boxes), with hulls and volumes, largest total volume first.
+std::vector<PavingComponent> components_from_labels(const Paving& inner, const Paving& boundary,
+                                                    std::span<const std::size_t> label, const ComponentOptions& options = {});
 
 /// Shortest arc of period `period` covering every interval (given in any window);
 /// its midpoint lies in [origin, origin + period).

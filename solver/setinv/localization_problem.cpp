@@ -7,6 +7,8 @@
 #include "solver/setinv/localization_data.h"
 #include "solver/setinv/bearing_contractor.h"
 #include "solver/setinv/range_contractor.h"
+#include "solver/setinv/hypotheses.h"
+#include "solver/setinv/outlier_refinement.h"
 
 namespace gesmi {
 namespace {
@@ -26,6 +28,35 @@ struct HalfPlanes {
 LocalizationData make_data(const LocalizationProblem& p) {
   return LocalizationData(RangeData(p.map.walls, p.range_sensors, p.ranges),
                           BearingData(p.map.walls, p.map.landmarks, p.bearing_sensors, p.bearings));
+}
+
+SiviaOptions sivia_options_of(const LocalizationProblem& problem) {
+  SiviaOptions o;
+  o.epsilon = problem.epsilon;
+  o.scale = {1.0, 1.0, problem.theta_scale};
+  o.periodic_dimension = 2;
+  o.period = kTwoPi;
+  o.max_boxes = problem.max_boxes;
+  o.max_seconds = problem.max_seconds;
+  return o;
+}
+
+/// SIVIA(q) with the contractors (Remark 5 of seed 004), each valid for S_q.
+SiviaResult solve_fixed(const LocalizationProblem& problem, LocalizationData& data, int q, const SiviaOptions& options) {
+  const HalfPlanes prior{problem.constraints};
+  if (!problem.use_contractors) return sivia_q(data, q, problem.priors, options, prior);
+  const CtcPair<CtcRangeRelaxed, CtcBearingRelaxed> ctc{
+      CtcRangeRelaxed(problem.map.walls, problem.range_sensors, problem.ranges),
+      CtcBearingRelaxed(problem.map.landmarks, problem.bearing_sensors, problem.bearings)};
+  return sivia_q(data, q, problem.priors, options, prior, ctc.with_outliers(q));
+}
+
+LocalizationProblem without_datum(LocalizationProblem p, std::size_t i) {
+  if (i < p.ranges.size())
+    p.ranges.erase(p.ranges.begin() + static_cast<std::ptrdiff_t>(i));
+  else
+    p.bearings.erase(p.bearings.begin() + static_cast<std::ptrdiff_t>(i - p.ranges.size()));
+  return p;
 }
 
 std::string check_angle(double a, const std::string& what) {
@@ -74,24 +105,13 @@ LocalizationResult localize(const LocalizationProblem& problem,
   const auto start = std::chrono::steady_clock::now();
   LocalizationData data = make_data(problem);
   const HalfPlanes prior{problem.constraints};
-  SiviaOptions sivia_options;
-  sivia_options.epsilon = problem.epsilon;
-  sivia_options.scale = {1.0, 1.0, problem.theta_scale};
-  sivia_options.periodic_dimension = 2;
-  sivia_options.period = kTwoPi;
-  sivia_options.max_boxes = problem.max_boxes;
-  sivia_options.max_seconds = problem.max_seconds;
+  SiviaOptions sivia_options = sivia_options_of(problem);
   sivia_options.progress = progress;
   LocalizationResult result;
-  // Contractors before bisection (Remark 5 of seed 004), each valid for S_q.
-  const CtcPair<CtcRangeRelaxed, CtcBearingRelaxed> ctc{
-      CtcRangeRelaxed(problem.map.walls, problem.range_sensors, problem.ranges),
-      CtcBearingRelaxed(problem.map.landmarks, problem.bearing_sensors, problem.bearings)};
   if (problem.policy == OutlierPolicy::fixed) {
     result.q = problem.outliers;
-    result.paving = problem.use_contractors
-                        ? sivia_q(data, problem.outliers, problem.priors, sivia_options, prior, ctc.with_outliers(problem.outliers))
-                        : sivia_q(data, problem.outliers, problem.priors, sivia_options, prior);
+    result.epsilon = problem.epsilon;
+    result.paving = solve_fixed(problem, data, problem.outliers, sivia_options);
     result.found = !result.paving.inner.empty() || !result.paving.boundary.empty();
   } else {
     GomneOptions options;
@@ -100,36 +120,73 @@ LocalizationResult localize(const LocalizationProblem& problem,
     options.extra_outliers = problem.extra_outliers;
     options.max_outliers = problem.max_outliers;
     options.sivia = sivia_options;
+    // Contractors before bisection (Remark 5 of seed 004), each valid for S_q.
+    const CtcPair<CtcRangeRelaxed, CtcBearingRelaxed> ctc{
+        CtcRangeRelaxed(problem.map.walls, problem.range_sensors, problem.ranges),
+        CtcBearingRelaxed(problem.map.landmarks, problem.bearing_sensors, problem.bearings)};
     GomneResult g = problem.use_contractors ? gomne(data, problem.priors, options, prior, ctc)
                                             : gomne(data, problem.priors, options, prior);
     result.q = std::max(0, g.q_used);
+    result.q_lower = std::min(g.q_lower, result.q);
+    result.epsilon = g.epsilon;
     result.found = g.found;
     result.paving = std::move(g.paving);
     g.paving = SiviaResult{Paving(), Paving(), g.paving.report};
     result.gomne = std::move(g);
   }
+  // Where phi is undetermined, bisect down to epsilon so that boxes split by outlier set.
+  OutlierRefinementOptions refine_options;
+  refine_options.q = result.q;
+  refine_options.q_lower = result.q_lower;
+  refine_options.epsilon = result.epsilon;
+  refine_options.scale = sivia_options.scale;
+  refine_options.max_boxes = problem.max_boxes;
+  OutlierPaving refined = refine_by_outliers(data, result.paving, refine_options, prior);
+  result.refinement_boxes = refined.boxes_evaluated;
+  result.outlier_sets = partition_by_outlier_set(refined);
   ComponentOptions component_options;
   component_options.periodic_dimension = 2;
   component_options.period = kTwoPi;
   component_options.periodic_origin = problem.priors.front()[2].lo();
-  for (PavingComponent& c : connected_components(result.paving.inner, result.paving.boundary, component_options)) {
+  for (PavingComponent& c : hypothesis_components(refined, component_options)) {
     LocalizationHypothesis h;
-    h.outliers = component_outliers(data, result.paving, c, result.q);
+    h.outliers = component_outliers(data, refined, c, result.q, prior);
     Pose<double> at{c.hull[0].mid(), c.hull[1].mid(), c.hull[2].mid()};
     if (!h.outliers.point.empty()) at = {h.outliers.point[0].mid(), h.outliers.point[1].mid(), h.outliers.point[2].mid()};
     h.range_walls = data.ranges().associate(at);
     h.bearing_landmarks = data.bearings().associate(at);
     if (problem.truth) {
-      for (std::size_t i : c.inner) h.contains_truth = h.contains_truth || box_holds_pose(result.paving.inner.box(i), *problem.truth);
+      for (std::size_t i : c.inner) h.contains_truth = h.contains_truth || box_holds_pose(refined.inner.box(i), *problem.truth);
       for (std::size_t i : c.boundary)
-        h.contains_truth = h.contains_truth || box_holds_pose(result.paving.boundary.box(i), *problem.truth);
+        h.contains_truth = h.contains_truth || box_holds_pose(refined.boundary.box(i), *problem.truth);
     }
     result.truth_enclosed = result.truth_enclosed || h.contains_truth;
     h.component = std::move(c);
     result.hypotheses.push_back(std::move(h));
   }
+  result.paving.inner = std::move(refined.inner);
+  result.paving.boundary = std::move(refined.boundary);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+std::vector<DatumSafety> localization_safety(const LocalizationProblem& problem, const LocalizationResult& result) {
+  const double inner = result.paving.inner.volume(), outer = inner + result.paving.boundary.volume();
+  SiviaOptions options = sivia_options_of(problem);
+  options.epsilon = result.epsilon > 0.0 ? result.epsilon : problem.epsilon;
+  std::vector<DatumSafety> out;
+  for (std::size_t i = 0; i < problem.datum_count(); ++i) {
+    const LocalizationProblem reduced = without_datum(problem, i);
+    LocalizationData data = make_data(reduced);
+    const SiviaResult r = solve_fixed(reduced, data, std::min(result.q, static_cast<int>(reduced.datum_count())), options);
+    DatumSafety s;
+    s.inner_volume = r.inner.volume();
+    s.outer_volume = s.inner_volume + r.boundary.volume();
+    s.limit_hit = r.report.limit_hit();
+    s.safety = safety_ratio(inner, outer, s.inner_volume, s.outer_volume);
+    out.push_back(s);
+  }
+  return out;
 }
 
 }  // namespace gesmi

@@ -2,9 +2,11 @@
 // Static localization of a robot (x, y, theta) from range and bearing measurements:
 // the problem as plain data (built by io/ from a scenario file), and `localize`,
 // which runs SIVIA(q) for a fixed number of outliers (seeds 000, 002, 003) or GOMNE
-// for the minimal one (seed 004), then splits the result into connected components,
-// one hypothesis each, with the data each treats as outliers and its association of
-// measurements with walls and landmarks.
+// for the minimal one (seed 004), refines the pavings until the outlier set phi is
+// known on each box (outlier_refinement.h), then splits the result by outlier set
+// (outlier_set_pavings.h) and into hypotheses (hypotheses.h), each with the data it
+// treats as outliers and its association of measurements with walls and landmarks.
+// localization_safety adds Remark 6's safety of each datum.
 
 #include <functional>
 #include <optional>
@@ -12,8 +14,10 @@
 #include <vector>
 
 #include "solver/setinv/components.h"
+#include "solver/setinv/datum_safety.h"
 #include "solver/setinv/gomne.h"
 #include "solver/setinv/localization_map.h"
+#include "solver/setinv/outlier_set_pavings.h"
 #include "solver/setinv/outlier_sets.h"
 
 namespace gesmi {
@@ -66,8 +70,15 @@ struct LocalizationHypothesis {
 };
 
 struct LocalizationResult {
+  /// SIVIA's (or GOMNE's) pavings refined where phi was undetermined; the report is
+  /// SIVIA's. Hypotheses index these boxes.
   SiviaResult paving;
   int q = 0;                           // the number of outliers the pavings allow
+  int q_lower = 0;                     // every S_k with k < q_lower was proved empty
+  double epsilon = 0.0;                // accuracy of the pavings
+  std::size_t refinement_boxes = 0;    // boxes evaluated to refine phi
+  OutlierPartition outlier_sets;       // S_q split by outlier set, with its ambiguous boxes
+  std::vector<DatumSafety> safety;     // per datum (Remark 6), when localization_safety ran
   bool found = false;                  // inner set non-empty (minimal) / set non-empty (fixed)
   std::optional<GomneResult> gomne;    // the run's steps (without its paving) for the minimal policy
   std::vector<LocalizationHypothesis> hypotheses;
@@ -77,6 +88,11 @@ struct LocalizationResult {
 
 LocalizationResult localize(const LocalizationProblem& problem,
                             const std::function<void(const SiviaProgress&)>& progress = {});
+
+/// Remark 6 of seed 004 for every datum (ranges first, then bearings): S^(i) is the
+/// q-outlier set of the problem without datum i, at the result's q and epsilon, with
+/// the contractors; the estimate is result's refined paving. One SIVIA per datum.
+std::vector<DatumSafety> localization_safety(const LocalizationProblem& problem, const LocalizationResult& result);
 
 /// Does the box hold the pose (theta compared modulo 2 pi)?
 bool box_holds_pose(std::span<const Interval> box, const Pose<double>& pose);

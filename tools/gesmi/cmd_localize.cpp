@@ -25,7 +25,7 @@ namespace {
 namespace po = boost::program_options;
 
 constexpr const char* kUsage =
-    "gesmi localize SCENARIO.yaml -o OUT_DIR [--quiet] [--skip-existing]\n"
+    "gesmi localize SCENARIO.yaml -o OUT_DIR [--safety] [--quiet] [--skip-existing]\n"
     "       gesmi localize SCENARIO.yaml --simulate [--seed N] [--error-fraction F] [--range-outliers I,J]\n"
     "                      [--bearing-outliers I,J]";
 
@@ -60,22 +60,52 @@ int simulate(LocalizationProblem problem, const po::variables_map& values) {
   return kExitOk;
 }
 
+nlohmann::json hull_json(const Box& box) {
+  nlohmann::json hull = nlohmann::json::array();
+  for (const Interval& x : box) hull.push_back(io::interval_json(x));
+  return hull;
+}
+
 // The hypotheses as report fields: data numbered from 0 (ranges first, then bearings).
 nlohmann::json localization_json(const LocalizationResult& r) {
   nlohmann::json hypotheses = nlohmann::json::array();
   for (const LocalizationHypothesis& h : r.hypotheses) {
-    nlohmann::json hull = nlohmann::json::array();
-    for (const Interval& x : h.component.hull) hull.push_back(io::interval_json(x));
-    hypotheses.push_back({{"outliers", h.outliers.outliers},
-                          {"outliers_determined", h.outliers.determined},
+    const ComponentOutliers& o = h.outliers;
+    hypotheses.push_back({{"outliers", o.outliers},
+                          {"outliers_determined", o.determined},
+                          {"agreed_outliers", o.outliers},
+                          {"agreed_inliers", o.agreed_inliers},
+                          {"outlier_sets", o.sets},
+                          {"outlier_sets_complete", o.sets_complete},
+                          {"possible_outlier_sets", o.possible_sets},
                           {"inner_boxes", h.component.inner.size()},
                           {"boundary_boxes", h.component.boundary.size()},
-                          {"hull", hull},
+                          {"hull", hull_json(h.component.hull)},
                           {"inner_volume", h.component.inner_volume},
                           {"outer_volume", h.component.inner_volume + h.component.boundary_volume},
                           {"holds_truth", h.contains_truth}});
   }
-  return {{"found", r.found}, {"q", r.q}, {"truth_enclosed", r.truth_enclosed}, {"hypotheses", hypotheses}};
+  nlohmann::json sets = nlohmann::json::array();
+  for (const OutlierSetPaving& s : r.outlier_sets.sets)
+    sets.push_back({{"outliers", s.outliers},
+                    {"inner_boxes", s.inner.size()},
+                    {"boundary_boxes", s.boundary.size()},
+                    {"hull", hull_json(s.hull)},
+                    {"inner_volume", s.inner_volume()},
+                    {"outer_volume", s.outer_volume()}});
+  nlohmann::json out{{"found", r.found},       {"q", r.q},         {"q_lower", r.q_lower},
+                     {"truth_enclosed", r.truth_enclosed}, {"hypotheses", hypotheses},
+                     {"outlier_sets", sets},   {"unresolved_boxes", r.outlier_sets.unresolved.size()}};
+  if (!r.safety.empty()) {
+    nlohmann::json safety = nlohmann::json::array();
+    for (const DatumSafety& s : r.safety)
+      safety.push_back({{"safety", io::interval_json(s.safety)},
+                        {"inner_volume_without", s.inner_volume},
+                        {"outer_volume_without", s.outer_volume},
+                        {"limit_hit", s.limit_hit}});
+    out["safety"] = safety;
+  }
+  return out;
 }
 
 int run_localize(std::span<const std::string> args) {
@@ -84,6 +114,7 @@ int run_localize(std::span<const std::string> args) {
       ("scenario", po::value<std::string>(), "scenario file (YAML)")
       ("output,o", po::value<std::string>(), "output folder (created if missing)")
       ("quiet,q", "do not print the summary")
+      ("safety", "also compute Remark 6's safety of each datum (one more SIVIA per datum)")
       ("simulate", "print measurements simulated at the scenario's true pose, write nothing")
       ("seed", po::value<std::string>()->default_value("1"), "--simulate: random seed")
       ("error-fraction", po::value<std::string>()->default_value("0.9"), "--simulate: errors as a fraction of the bounds")
@@ -108,10 +139,14 @@ int run_localize(std::span<const std::string> args) {
   if (skipped_as_existing(values, "localize", io::localization_output_files(folder))) return kExitOk;
   Progress progress("gesmi localize:");  // on a terminal, for long searches only (progress.h)
   progress.update(-1.0, "searching");
-  const LocalizationResult result = localize(problem, [&](const SiviaProgress& p) {
+  LocalizationResult result = localize(problem, [&](const SiviaProgress& p) {
     progress.update(-1.0, "searching: " + std::to_string(p.boxes_visited) + " boxes, " + std::to_string(p.inner_boxes) +
                               " inner, " + std::to_string(p.boundary_boxes) + " boundary");
   });
+  if (values.count("safety") && result.found) {
+    progress.update(-1.0, "safety of each datum");
+    result.safety = localization_safety(problem, result);
+  }
   progress.update(-1.0, "writing " + folder);
   outputs.prepare_folder(folder);
   const std::vector<std::string> written = io::write_localization_outputs(folder, problem, result);

@@ -10,6 +10,7 @@
 #include <limits>
 #include <numbers>
 
+#include "solver/setinv/hypotheses.h"
 #include "solver/setinv/outlier_sets.h"
 
 namespace gesmi {
@@ -41,6 +42,15 @@ int failures(const ImageInBox<GaussianDensity>& data, double p1, double p2, std:
       if (phi) phi->push_back(i);
     }
   return n;
+}
+
+template <class Data>
+OutlierPaving refine(Data& data, const GomneResult& r, double epsilon) {
+  OutlierRefinementOptions o;
+  o.q = r.q_used;
+  o.q_lower = r.q_lower;
+  o.epsilon = epsilon;
+  return refine_by_outliers(data, r.paving, o);
 }
 
 bool in_pavings(const SiviaResult& r, double x, double y) {
@@ -94,17 +104,18 @@ TEST(Gomne, EachComponentNamesTheOutliersOfItsPoints) {
   options.epsilon0 = 0.005;
   const GomneResult r = gomne(data, std::span<const Box>(&kGaussianFrame, 1), options);
   ASSERT_TRUE(r.found);
-  const auto components = connected_components(r.paving.inner, r.paving.boundary);
+  const OutlierPaving refined = refine(data, r, options.epsilon0);
+  const auto components = hypothesis_components(refined);
   ASSERT_GE(components.size(), 1u);
   for (const PavingComponent& c : components) {
     if (c.inner.empty()) continue;
-    const ComponentOutliers o = component_outliers(data, r.paving, c, r.q_star);
+    const ComponentOutliers o = component_outliers(data, refined, c, r.q_star);
     ASSERT_TRUE(o.determined);
     EXPECT_EQ(static_cast<int>(o.outliers.size()), r.q_star);
     // Proposition 2: the inner boxes' centres of this component agree.
     for (std::size_t i : c.inner) {
       std::vector<std::size_t> phi;
-      const auto b = r.paving.inner.box(i);
+      const auto b = refined.inner.box(i);
       ASSERT_EQ(failures(data, b[0].mid(), b[1].mid(), &phi), r.q_star);
       EXPECT_EQ(phi, o.outliers);
     }
@@ -139,9 +150,10 @@ TEST(Gomne, LineWithThreeSpoiledPointsHasThreeOutliersAndNamesThem) {
   const GomneResult r = gomne(data, std::span<const Box>(&prior, 1), options);
   ASSERT_TRUE(r.exact());
   EXPECT_EQ(r.q_star, 3);
-  const auto components = connected_components(r.paving.inner, r.paving.boundary);
+  const OutlierPaving refined = refine(data, r, options.epsilon0);
+  const auto components = hypothesis_components(refined);
   ASSERT_EQ(components.size(), 1u);
-  const ComponentOutliers o = component_outliers(data, r.paving, components[0], r.q_star);
+  const ComponentOutliers o = component_outliers(data, refined, components[0], r.q_star);
   ASSERT_TRUE(o.determined);
   EXPECT_EQ(o.outliers, (std::vector<std::size_t>{1, 4, 6}));
   EXPECT_TRUE(components[0].hull[0].contains(0.5));
