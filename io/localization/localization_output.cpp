@@ -8,12 +8,14 @@
 #include "io/format_error.h"
 #include "io/imports/csv_number.h"
 #include "io/localization/localization_hdf5.h"
+#include "io/localization/localization_json.h"
 #include "io/plot/localization_picture.h"
 
 namespace gesmi::io {
 namespace {
 
 constexpr double kDeg = 180.0 / std::numbers::pi;
+constexpr std::size_t kMaxListedSets = 64;  // component_outliers' default max_sets
 
 std::string format(const char* pattern, auto... values) {
   char buffer[512];
@@ -21,17 +23,43 @@ std::string format(const char* pattern, auto... values) {
   return buffer;
 }
 
-/// Name of datum i: the sensor's name (bearings: name#k, k-th bearing of the list).
+/// Name of datum i: its number in the scenario file and its sensor's name.
 std::string datum_name(const LocalizationProblem& p, std::size_t i) {
-  if (i < p.ranges.size()) return p.range_sensors[p.ranges[i].sensor].name;
-  const std::size_t m = i - p.ranges.size();
-  return p.bearing_sensors[p.bearings[m].sensor].name + "#" + std::to_string(m);
+  const std::string sensor = i < p.ranges.size() ? p.range_sensors[p.ranges[i].sensor].name
+                                                 : p.bearing_sensors[p.bearings[i - p.ranges.size()].sensor].name;
+  return "#" + std::to_string(p.file_number(i)) + ":" + sensor;
 }
 
-std::string outlier_names(const LocalizationProblem& p, const LocalizationHypothesis& h) {
+std::string names(const LocalizationProblem& p, const OutlierSet& set) {
   std::string s;
-  for (std::size_t i : h.outliers.outliers) s += (s.empty() ? "" : " ") + datum_name(p, i);
+  for (std::size_t i : set) s += (s.empty() ? "" : " ") + datum_name(p, i);
   return s.empty() ? "none" : s;
+}
+
+// Determined: the one set, proved. Otherwise what every set agrees on, the sets
+// proved present and how many may be.
+std::string outlier_lines(const LocalizationProblem& p, const LocalizationHypothesis& h) {
+  const ComponentOutliers& o = h.outliers;
+  if (o.determined) return "     outliers: " + names(p, o.outliers) + "  (the only outlier set, proved)\n";
+  std::string s = "     agreed outliers: " + names(p, o.outliers) + "\n     outlier sets:";
+  for (const OutlierSet& set : o.sets) s += " {" + (set.empty() ? std::string() : names(p, set)) + "}";
+  if (o.sets.empty()) s += " none proved";
+  if (o.sets_complete)
+    s += format("  (all %zu possible sets proved)\n", o.possible_sets);
+  else if (o.possible_sets > kMaxListedSets)
+    s += format("  (more than %zu possible sets, %zu proved)\n", kMaxListedSets, o.sets.size());
+  else
+    s += format("  (%zu possible sets, %zu proved)\n", o.possible_sets, o.sets.size());
+  return s;
+}
+
+std::string safety_lines(const LocalizationProblem& p, const LocalizationResult& r) {
+  if (r.safety.empty()) return {};
+  std::string s = "safety of each datum (Remark 6 of seed 004: vol S / vol S without the datum):\n";
+  for (std::size_t i = 0; i < r.safety.size(); ++i)
+    s += format("  %-16s [%.4f, %.4f]%s\n", datum_name(p, i).c_str(), r.safety[i].safety.lo(), r.safety[i].safety.hi(),
+                r.safety[i].limit_hit ? "  (a limit was hit)" : "");
+  return s;
 }
 
 std::string association_text(const LocalizationProblem& p, const LocalizationHypothesis& h) {
@@ -88,10 +116,10 @@ std::string localization_summary(const LocalizationProblem& p, const Localizatio
     s += format("  #%zu x %s  y %s  theta %s deg  (%zu inner, %zu boundary boxes)%s\n", k + 1, interval_text(b[0], 1).c_str(),
                 interval_text(b[1], 1).c_str(), interval_text(b[2], kDeg).c_str(), h.component.inner.size(),
                 h.component.boundary.size(), h.contains_truth ? "  <- holds the true pose" : "");
-    s += format("     outliers: %s%s\n", outlier_names(p, h).c_str(),
-                h.outliers.determined ? "" : (h.outliers.point.empty() ? " (undetermined)" : " (read at a point with fewer)"));
+    s += outlier_lines(p, h);
     s += "     associations: " + association_text(p, h) + "\n";
   }
+  s += safety_lines(p, r);
   if (p.truth)
     s += format("true pose (%.4f, %.4f, %.3f deg) %s\n", p.truth->x, p.truth->y, p.truth->theta * kDeg,
                 r.truth_enclosed ? "is enclosed" : "is NOT enclosed");
@@ -119,7 +147,7 @@ std::string components_csv(const LocalizationProblem& p, const LocalizationResul
     s += format("%zu,%zu,%zu", k + 1, h.component.inner.size(), h.component.boundary.size());
     for (int d = 0; d < 3; ++d) s += "," + format_number(b[d].lo()) + "," + format_number(b[d].hi());
     s += "," + format_number(h.component.inner_volume) + "," + format_number(h.component.boundary_volume) + ",";
-    s += "\"" + outlier_names(p, h) + "\"," + (h.outliers.determined ? "1" : "0") + ",\"" + association_text(p, h) + "\"," +
+    s += "\"" + names(p, h.outliers.outliers) + "\"," + (h.outliers.determined ? "1" : "0") + ",\"" + association_text(p, h) + "\"," +
          (h.contains_truth ? "1" : "0") + "\n";
   }
   return s;
@@ -127,8 +155,8 @@ std::string components_csv(const LocalizationProblem& p, const LocalizationResul
 
 std::vector<std::string> localization_output_files(const std::string& folder) {
   const std::string base = (std::filesystem::path(folder) / "").string();
-  return {base + "inner.csv",   base + "boundary.csv", base + "components.csv",
-          base + "summary.txt", base + "paving.h5",    base + "paving.png"};
+  return {base + "inner.csv",   base + "boundary.csv", base + "components.csv", base + "summary.txt",
+          base + "summary.json", base + "paving.h5",  base + "paving.png"};
 }
 
 std::vector<std::string> write_localization_outputs(const std::string& folder, const LocalizationProblem& p,
@@ -152,10 +180,11 @@ std::vector<std::string> write_localization_outputs(const std::string& folder, c
   text(files[1], paving_csv(r.paving.boundary, boundary_component));
   text(files[2], components_csv(p, r));
   text(files[3], localization_summary(p, r));
-  write_localization_hdf5(files[4], p, r);
-  written.push_back(files[4]);
-  write_localization_picture(files[5], p, r);
+  text(files[4], localization_summary_json(p, r).dump(2) + "\n");
+  write_localization_hdf5(files[5], p, r);
   written.push_back(files[5]);
+  write_localization_picture(files[6], p, r);
+  written.push_back(files[6]);
   return written;
 }
 

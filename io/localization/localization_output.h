@@ -1,8 +1,8 @@
 #pragma once
 // Everything `gesmi localize` writes: the inner and boundary boxes (CSV, HDF5), the
 // components with their hull boxes, outliers and associations (CSV), the summary
-// text (also printed) and the picture. Each file is written to a temporary name and
-// renamed. Formats: docs/setinversion.md.
+// text (also printed), summary.json (localization_json.h) and the picture. Each
+// file is written to a temporary name and renamed. Formats: docs/setinversion.md.
 
 #include <string>
 #include <vector>
@@ -21,7 +21,7 @@ std::string components_csv(const LocalizationProblem& problem, const Localizatio
 
 /// The files write_localization_outputs() writes into `folder`, in that order.
 std::vector<std::string> localization_output_files(const std::string& folder);
-/// Writes inner.csv, boundary.csv, components.csv, summary.txt, paving.h5, paving.png into
+/// Writes inner.csv, boundary.csv, components.csv, summary.txt, summary.json, paving.h5, paving.png into
 /// `folder` (created if missing); returns the paths written.
 std::vector<std::string> write_localization_outputs(const std::string& folder, const LocalizationProblem& problem,
                                                     const LocalizationResult& result);

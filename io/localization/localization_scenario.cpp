@@ -150,6 +150,7 @@ SensorIndex read_sensors(const Reader& r, const YAML::Node& root, LocalizationPr
 void read_measurements(const Reader& r, const YAML::Node& root, const SensorIndex& index, LocalizationProblem& p) {
   const YAML::Node list = r.required(root, "", "measurements");
   if (!list.IsSequence() || list.size() == 0) r.fail(list, "measurements", "expected a non-empty list");
+  std::vector<std::size_t> range_numbers, bearing_numbers;  // the problem stores ranges first
   for (std::size_t i = 0; i < list.size(); ++i) {
     const YAML::Node m = list[i];
     const std::string key = Reader::item("measurements", i);
@@ -161,11 +162,15 @@ void read_measurements(const Reader& r, const YAML::Node& root, const SensorInde
       const double d = r.number(r.required(m, key, "range"), key + ".range");
       if (!(d > 0.0)) r.fail(m["range"], key + ".range", "must be positive");
       p.ranges.push_back({found->second.second, d});
+      range_numbers.push_back(i + 1);
     } else {
       r.only_keys(m, key, {"sensor", "bearing_deg"});
       p.bearings.push_back({found->second.second, r.number(r.required(m, key, "bearing_deg"), key + ".bearing_deg") * kDeg});
+      bearing_numbers.push_back(i + 1);
     }
   }
+  p.file_numbers = std::move(range_numbers);
+  p.file_numbers.insert(p.file_numbers.end(), bearing_numbers.begin(), bearing_numbers.end());
 }
 
 void read_prior(const Reader& r, const YAML::Node& root, LocalizationProblem& p) {

@@ -56,6 +56,7 @@ LocalizationProblem without_datum(LocalizationProblem p, std::size_t i) {
     p.ranges.erase(p.ranges.begin() + static_cast<std::ptrdiff_t>(i));
   else
     p.bearings.erase(p.bearings.begin() + static_cast<std::ptrdiff_t>(i - p.ranges.size()));
+  if (i < p.file_numbers.size()) p.file_numbers.erase(p.file_numbers.begin() + static_cast<std::ptrdiff_t>(i));
   return p;
 }
 
@@ -74,6 +75,7 @@ bool box_holds_pose(std::span<const Interval> box, const Pose<double>& pose) {
 std::string LocalizationProblem::validate() const {
   if (datum_count() == 0) return "no measurements";
   if (priors.empty()) return "no prior box";
+  if (!file_numbers.empty() && file_numbers.size() != datum_count()) return "one file number per measurement";
   for (const Box& b : priors) {
     if (b.size() != 3) return "prior boxes must have 3 components (x, y, theta)";
     for (const Interval& x : b)

@@ -39,6 +39,9 @@ struct LocalizationProblem {
   std::vector<BearingSensor> bearing_sensors;
   std::vector<RangeMeasurement> ranges;
   std::vector<BearingMeasurement> bearings;
+  /// Per datum (ranges first, then bearings): its number in the scenario's list of
+  /// measurements, from 1 (empty: i + 1). Outputs for people name data by it.
+  std::vector<std::size_t> file_numbers;
   std::vector<Box> priors;             // boxes (x, y, theta), theta in radians
   std::vector<HalfPlane> constraints;  // all must hold
   double epsilon = 0.02;               // SIVIA accuracy (GOMNE's epsilon0)
@@ -57,6 +60,8 @@ struct LocalizationProblem {
   bool use_contractors = true;
 
   std::size_t datum_count() const { return ranges.size() + bearings.size(); }
+  /// Datum i's number in the scenario file (from 1).
+  std::size_t file_number(std::size_t i) const { return i < file_numbers.size() ? file_numbers[i] : i + 1; }
   /// Empty when consistent (indices, counts, widths); otherwise the reason.
   std::string validate() const;
 };

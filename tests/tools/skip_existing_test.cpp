@@ -52,10 +52,13 @@ TEST(SkipExisting, EveryWritingCommandSkipsWhenItsOutputsExist) {
   expect_skipped({"import", "gesmi-txt", d + "/log.txt", "-o", d + "/g.h5"}, {d + "/g.h5"});
   fs::create_directories(d + "/loc");
   std::vector<std::string> files;
-  for (const char* f : {"inner.csv", "boundary.csv", "components.csv", "summary.txt", "paving.h5", "paving.png"})
+  for (const char* f : {"inner.csv", "boundary.csv", "components.csv", "summary.txt", "summary.json", "paving.h5", "paving.png"})
     files.push_back(d + "/loc/" + f);
   expect_skipped({"localize", source_dir() + "/missions/localization/triangle_two_hypotheses.yaml", "-o", d + "/loc"},
                  files);
+  fs::create_directories(d + "/est");
+  expect_skipped({"estimate", source_dir() + "/missions/setinv/seed004_example2.yaml", "-o", d + "/est"},
+                 {d + "/est/summary.txt", d + "/est/summary.json", d + "/est/boxes.csv"});
   expect_skipped({"export", result, "--format", "tube-csv", "-o", d + "/t.csv"}, {d + "/t.csv"});
   expect_skipped({"export", mission, "--format", "gesmi-txt", "-o", d + "/m.txt"}, {d + "/m.txt"});
   // A folder export is renamed into place whole: its import-command.txt stands for it.

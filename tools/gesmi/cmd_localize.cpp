@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/output/output_set.h"
+#include "io/localization/localization_json.h"
 #include "io/localization/localization_output.h"
 #include "io/localization/localization_scenario.h"
 #include "solver/setinv/measurement_simulator.h"
@@ -58,54 +59,6 @@ int simulate(LocalizationProblem problem, const po::variables_map& values) {
   problem.bearings = simulate_bearings(problem.map, problem.bearing_sensors, *problem.truth, options);
   std::fputs(io::localization_measurements_yaml(problem).c_str(), stdout);
   return kExitOk;
-}
-
-nlohmann::json hull_json(const Box& box) {
-  nlohmann::json hull = nlohmann::json::array();
-  for (const Interval& x : box) hull.push_back(io::interval_json(x));
-  return hull;
-}
-
-// The hypotheses as report fields: data numbered from 0 (ranges first, then bearings).
-nlohmann::json localization_json(const LocalizationResult& r) {
-  nlohmann::json hypotheses = nlohmann::json::array();
-  for (const LocalizationHypothesis& h : r.hypotheses) {
-    const ComponentOutliers& o = h.outliers;
-    hypotheses.push_back({{"outliers", o.outliers},
-                          {"outliers_determined", o.determined},
-                          {"agreed_outliers", o.outliers},
-                          {"agreed_inliers", o.agreed_inliers},
-                          {"outlier_sets", o.sets},
-                          {"outlier_sets_complete", o.sets_complete},
-                          {"possible_outlier_sets", o.possible_sets},
-                          {"inner_boxes", h.component.inner.size()},
-                          {"boundary_boxes", h.component.boundary.size()},
-                          {"hull", hull_json(h.component.hull)},
-                          {"inner_volume", h.component.inner_volume},
-                          {"outer_volume", h.component.inner_volume + h.component.boundary_volume},
-                          {"holds_truth", h.contains_truth}});
-  }
-  nlohmann::json sets = nlohmann::json::array();
-  for (const OutlierSetPaving& s : r.outlier_sets.sets)
-    sets.push_back({{"outliers", s.outliers},
-                    {"inner_boxes", s.inner.size()},
-                    {"boundary_boxes", s.boundary.size()},
-                    {"hull", hull_json(s.hull)},
-                    {"inner_volume", s.inner_volume()},
-                    {"outer_volume", s.outer_volume()}});
-  nlohmann::json out{{"found", r.found},       {"q", r.q},         {"q_lower", r.q_lower},
-                     {"truth_enclosed", r.truth_enclosed}, {"hypotheses", hypotheses},
-                     {"outlier_sets", sets},   {"unresolved_boxes", r.outlier_sets.unresolved.size()}};
-  if (!r.safety.empty()) {
-    nlohmann::json safety = nlohmann::json::array();
-    for (const DatumSafety& s : r.safety)
-      safety.push_back({{"safety", io::interval_json(s.safety)},
-                        {"inner_volume_without", s.inner_volume},
-                        {"outer_volume_without", s.outer_volume},
-                        {"limit_hit", s.limit_hit}});
-    out["safety"] = safety;
-  }
-  return out;
 }
 
 int run_localize(std::span<const std::string> args) {
@@ -158,7 +111,7 @@ int run_localize(std::span<const std::string> args) {
     report.inputs(values, {"scenario"});
     report.outputs(written);
     report.timings({{"search", result.seconds * 1000.0}});
-    report["localization"] = localization_json(result);
+    report["localization"] = io::localization_json(problem, result, io::DatumNumbering::index);
     return report.finish(exit_code);
   }
   if (!values.count("quiet")) std::fputs(io::localization_summary(problem, result).c_str(), stdout);

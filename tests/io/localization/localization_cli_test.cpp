@@ -31,7 +31,7 @@ TEST(LocalizeCli, WritesPavingsComponentsSummaryAndPicture) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("hypotheses (connected components): 2"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("holds the true pose"), std::string::npos) << r.out;
-  for (const char* f : {"inner.csv", "boundary.csv", "components.csv", "summary.txt", "paving.h5", "paving.png"})
+  for (const char* f : {"inner.csv", "boundary.csv", "components.csv", "summary.txt", "summary.json", "paving.h5", "paving.png"})
     EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
   EXPECT_EQ(read(out + "/summary.txt"), r.out);
   const std::string components = read(out + "/components.csv");

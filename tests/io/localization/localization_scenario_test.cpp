@@ -66,6 +66,17 @@ TEST(LocalizationScenario, ReadsEverySection) {
   EXPECT_NEAR(p.truth->theta, std::numbers::pi / 6, 1e-15);
 }
 
+TEST(LocalizationScenario, NumbersDataAsTheFileListsThem) {
+  // The problem stores ranges first; outputs name data by their place in the file.
+  std::string text = kValid;
+  const std::string range = "  - {sensor: front, range: 2.5}\n", bearing = "  - {sensor: cam, bearing_deg: -45}\n";
+  text.replace(text.find(range + bearing), range.size() + bearing.size(), bearing + range);
+  const LocalizationProblem p = parse(text);
+  ASSERT_EQ(p.datum_count(), 2u);
+  EXPECT_EQ(p.file_number(0), 2u);  // the range, second in the file
+  EXPECT_EQ(p.file_number(1), 1u);  // the bearing, first
+}
+
 struct BadCase {
   std::string from, to;  // replace `from` in the valid text by `to`
   std::string key;       // must be named

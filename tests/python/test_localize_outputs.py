@@ -1,0 +1,91 @@
+"""The outputs of set-inversion localization and estimation (issue 16): the Python
+binding's outlier fields (agreed outliers and inliers, outlier sets, q_lower, safety),
+OUT/summary.json written by `gesmi localize` (data numbered from 1 as in the scenario
+file) and by `gesmi estimate` on seed 004's Example 2, checked against a grid."""
+import json
+import os
+
+import numpy as np
+import pytest
+
+import gesmi
+from conftest import run_gesmi
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+WAREHOUSE = os.path.join(ROOT, "missions", "localization", "warehouse_p04_outliers.yaml")
+EXAMPLE2 = os.path.join(ROOT, "missions", "setinv", "seed004_example2.yaml")
+# The bearings given outlier values when the scenario was simulated
+# (`--bearing-outliers 3,8`, its description): every datum is a bearing.
+INJECTED = [3, 8]
+
+
+@pytest.fixture(scope="module")
+def warehouse():
+    return gesmi.localize(WAREHOUSE, safety=True)
+
+
+def test_binding_names_the_injected_outliers_and_proves_fewer_impossible(warehouse):
+    r = warehouse
+    assert r["found"]
+    assert r["q"] == 2 and r["q_lower"] == 2  # q* = 2: no pose fits with 0 or 1 outlier
+    assert len(r["hypotheses"]) == 1
+    h = r["hypotheses"][0]
+    assert h["agreed_outliers"] == INJECTED
+    assert h["agreed_inliers"] == [i for i in range(13) if i not in INJECTED]
+    assert h["outlier_sets"] == [INJECTED] and h["outlier_sets_complete"]
+    assert h["outliers_determined"]
+    assert [s["outliers"] for s in r["outlier_sets"]] == [INJECTED]
+
+
+def test_binding_safety_is_one_interval_in_0_1_per_datum(warehouse):
+    safety = np.array(warehouse["safety"])
+    assert safety.shape == (13, 2)
+    assert np.all(safety[:, 0] >= 0) and np.all(safety[:, 1] <= 1) and np.all(safety[:, 0] <= safety[:, 1])
+
+
+def test_summary_json_numbers_data_from_1_as_in_the_file(tmp_path, warehouse):
+    out = str(tmp_path / "w")
+    r = run_gesmi("localize", WAREHOUSE, "-o", out, "--safety", "--quiet")
+    assert r.returncode == 0, r.stderr
+    with open(os.path.join(out, "summary.json")) as f:
+        s = json.load(f)
+    assert s["q"] == 2 and s["q_lower"] == 2
+    h = s["hypotheses"][0]
+    assert h["outliers"] == [i + 1 for i in INJECTED]
+    assert h["agreed_inliers"] == [i + 1 for i in warehouse["hypotheses"][0]["agreed_inliers"]]
+    assert h["outlier_sets"] == [[i + 1 for i in INJECTED]]
+    assert [d["datum"] for d in s["safety"]] == list(range(1, 14))
+    lo = [d["safety"][0] for d in s["safety"]]
+    assert np.allclose(lo, np.array(warehouse["safety"])[:, 0])
+
+
+def grid_sets():
+    """Outlier sets (from 1) of Example 2 met on a grid of the frame, by size."""
+    lo = np.array([0, 0.3, 0.3, 0.1, 0.4, -1])
+    hi = np.array([0.2, 2, 2, 0.2, 2, 0.1])
+    p1, p2 = np.meshgrid(np.linspace(-2, 8, 1001), np.linspace(0.003, 3, 1000), indexing="ij")
+    codes = np.zeros(p1.shape, dtype=int)
+    for i in range(6):
+        t = i + 1
+        f = np.exp(-(t - p1) ** 2 / (2 * p2)) / np.sqrt(2 * np.pi * p2)
+        codes |= ((f < lo[i]) | (f > hi[i])).astype(int) << i
+    sets = {}
+    for code in np.unique(codes):
+        s = [i + 1 for i in range(6) if code >> i & 1]
+        sets.setdefault(len(s), set()).add(tuple(s))
+    return sets
+
+
+def test_estimate_example2_proves_the_sets_of_the_grid(tmp_path):
+    out = str(tmp_path / "e")
+    r = run_gesmi("estimate", EXAMPLE2, "-o", out, "--quiet")
+    assert r.returncode == 0, r.stderr
+    with open(os.path.join(out, "summary.json")) as f:
+        s = json.load(f)
+    proved = {}
+    for h in s["hypotheses"]:
+        assert len(h["outliers"]) == h["q"]
+        if h["proved"]:
+            proved.setdefault(h["q"], set()).add(tuple(h["outliers"]))
+    assert proved == grid_sets()
+    assert [level["q"] for level in s["levels"]] == list(range(7))
