@@ -24,7 +24,7 @@ class ChainFactors : public MeasurementSink {
   std::size_t bias_offset() const { return 3 * mines_; }  // the first bias among the static unknowns
   bool biases() const { return biases_; }
   /// G_k: p_k = p'_k + G_k b (zero without biases).
-  const BiasJacobian& sensitivity(std::size_t k) const { return g_[k]; }
+  const BiasJacobian& sensitivity(std::size_t k) const { return g_[biases_ ? k : 0]; }
 
   void odometry(std::size_t k, const Mat3d& information, const Vec3d& delta, const BiasJacobian& jacobian) final;
   void scalar(std::size_t k, const Eigen::RowVector3d& hp, int mine, const Eigen::RowVector3d& hm, const BiasRow& hb,

@@ -1,7 +1,7 @@
 #pragma once
 // The Kalman smoother's measurement model (seed 001, section VI), linearised at a point:
 // every measurement as a factor on the positions p_k, the mines and, in the
-// bias-aware variant, eight constant sensor biases b (docs/comparison.md). The
+// bias-aware variant, nine constant sensor biases b (docs/comparison.md). The
 // smoother's builder, its statistics and its tests all read the model from here, so it
 // is written once.
 //

@@ -87,6 +87,9 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
   result.steps = n;
   result.mines = k_mines;
   result.biases = o.biases;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  result.mine_mean.assign(3 * k_mines, nan);  // (a mine never detected stays NaN)
+  result.mine_covariance.assign(9 * k_mines, nan);
   if (o.max_iterations < 1 || n == 0) return result;  // nothing solved (validate() refuses such options)
   const MeasurementOptions measurements{o.noise_factor, o.biases};
   const BiasVec prior_sigma = o.biases ? bias_prior_sigma(model, o.noise_factor) : BiasVec::Zero();
@@ -121,10 +124,20 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
       for (int b = 0; b < kBiasCount && o.biases; ++b)
         statistics.static_prior(builder.bias_offset() + static_cast<std::size_t>(b), 0.0,
                                 1.0 / (prior_sigma[b] * prior_sigma[b]));
-      std::size_t unknowns = 3 * n + (o.biases ? kBiasCount : 0);
+      // Without a fix the horizontal position is held by the weak prior alone: those two
+      // unknowns are not determined by the data.
+      std::size_t unknowns = 3 * n + (o.biases ? kBiasCount : 0) - (fixes.empty() ? 2 : 0);
       for (std::size_t i = 0; i < k_mines; ++i) unknowns += lin.mine_known[i] ? 3 : 0;
       result.consistency = statistics.consistency(unknowns);
       result.tests = statistics.tests(m.time);
+      for (InputTest& t : result.tests) {  // the input's own time, not its step's
+        if (t.input.kind == ConstraintRef::Kind::mark) {
+          t.time = m.mark_time[t.input.row];
+          continue;
+        }
+        for (const PositionFix& fix : fixes)
+          if (fix.source_index == t.input.row) t.time = fix.time;
+      }
       // The result, converted from the chain's terms.
       chain.release_workspace();  // before the result's arrays: the peak stays that of a solve
       result.mean.resize(3 * n);
@@ -149,9 +162,6 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     result.bias_sigma = chain.static_covariance().bottomRightCorner<kBiasCount, kBiasCount>().diagonal().cwiseSqrt();
     result.bias_prior_sigma = prior_sigma;
   }
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  result.mine_mean.assign(3 * k_mines, nan);
-  result.mine_covariance.assign(9 * k_mines, nan);
   for (std::size_t i = 0; i < k_mines; ++i) {
     if (!lin.mine_known[i]) continue;
     const auto b = static_cast<Eigen::Index>(3 * i);

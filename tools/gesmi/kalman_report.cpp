@@ -31,13 +31,15 @@ void print_kalman_checks(const KalmanResult& r) {
     std::printf("flagged: %s at t = %.1f s: leave-one-out chi2 %.3g on %d dof (largest normalised residual %.3g)\n",
                 input_name(t.input).c_str(), t.time, t.chi2, t.dof, t.max_normalised);
   }
-  std::printf("residual tests: %zu input(s), %zu flagged beyond the %.2f %% quantile, %zu not testable (a mine's only mark)\n",
+  std::printf("residual tests: %zu input(s), %zu flagged beyond the %.2f %% quantile, %zu not testable (an input that "
+              "alone determines what it measures: a mine's only mark, a lone GPS fix)\n",
               r.tests.size(), flagged, 100.0 * kResidualTestProbability, untestable);
   if (!r.biases) return;
   for (int b = 0; b < kBiasCount; ++b) {
     const BiasDescription& d = bias_descriptions()[static_cast<std::size_t>(b)];
-    std::printf("bias %-12s %+.4g %s (sigma %.3g, prior sigma %.3g)\n", std::string(d.name).c_str(), r.bias_estimate[b],
-                std::string(d.unit).c_str(), r.bias_sigma[b], r.bias_prior_sigma[b]);
+    std::printf("bias %-12s %+.4g %s (sigma %.3g, prior sigma %.3g)%s\n", std::string(d.name).c_str(), r.bias_estimate[b],
+                std::string(d.unit).c_str(), r.bias_sigma[b], r.bias_prior_sigma[b],
+                r.bias_sigma[b] > 0.9 * r.bias_prior_sigma[b] ? "  not determined by the data (sigma near its prior)" : "");
   }
 }
 

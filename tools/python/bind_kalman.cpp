@@ -40,6 +40,7 @@ void bind_kalman(py::module_& m) {
             d["chi2_per_dof"] = c.chi2_per_dof;
             d["band_low"] = c.band_low;
             d["band_high"] = c.band_high;
+            d["band_probability"] = kChiSquareBandProbability;
             d["consistent"] = c.consistent;
             return d;
           },

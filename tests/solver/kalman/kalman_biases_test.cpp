@@ -138,6 +138,8 @@ TEST(KalmanBiases, RecoversConstantBiasesAddedToTheReadings) {
   // DVL's along-track scale and offset only together, at a nearly constant speed).
   for (const int b : {int{bias_heading}, int{bias_depth_scale}})
     EXPECT_LT(aware.bias_sigma[b], 0.5 * aware.bias_prior_sigma[b]) << bias_descriptions()[static_cast<std::size_t>(b)].name;
+  // Nothing but the barometer sees the absolute depth: its offset keeps its prior.
+  EXPECT_GT(aware.bias_sigma[bias_depth_offset], 0.99 * aware.bias_prior_sigma[bias_depth_offset]);
   const Containment c = three_sigma_containment(aware, m);
   std::printf("[ report ] truth within 3 sigma horizontally: bias-aware %.1f %% of steps, plain %.1f %%; chi2/dof plain %.3g, "
               "bias-aware %.3g\n",

@@ -70,7 +70,7 @@ TEST(KalmanConsistency, LeaveOneOutOfAFixMatchesRefittingWithoutIt) {
       ASSERT_NE(t, nullptr);
       std::printf("[ report ] %s, fix %zu: leave-one-out chi2 %.4g, refit %.4g\n", biases ? "bias-aware" : "plain", f,
                   t->chi2, expected);
-      EXPECT_NEAR(t->chi2, expected, 0.02 * expected + 1e-3);
+      EXPECT_NEAR(t->chi2, expected, 0.005 * expected + 1e-3);
       EXPECT_EQ(t->dof, 2);
       EXPECT_EQ(t->flagged, t->chi2 > chi_square_quantile(2.0, kResidualTestProbability));
     }
