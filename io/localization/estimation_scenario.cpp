@@ -6,55 +6,12 @@
 #include "io/format_error.h"
 #include "io/text/message_text.h"
 #include "io/text/strict_yaml.h"
+#include "io/text/yaml_fields.h"
 
 namespace gesmi::io {
 namespace {
 
-class Reader {
- public:
-  explicit Reader(std::string source) : source_(std::move(source)) {}
-
-  [[noreturn]] void fail(const YAML::Node& node, const std::string& key, const std::string& reason) const {
-    const std::string line = node.IsDefined() && node.Mark().line >= 0 ? ":" + std::to_string(node.Mark().line + 1) : "";
-    throw FormatError(source_ + line + ": " + key + ": " + reason);
-  }
-  void only_keys(const YAML::Node& map, const std::string& key, const std::set<std::string>& allowed) const {
-    if (!map.IsMap()) fail(map, key, "expected a mapping");
-    for (const auto& entry : map)
-      if (!allowed.count(entry.first.Scalar()))
-        fail(entry.first, (key.empty() ? "" : key + ".") + quoted_input(entry.first.Scalar()), "unknown key");
-  }
-  YAML::Node required(const YAML::Node& map, const std::string& key, const std::string& name) const {
-    const YAML::Node n = map[name];
-    if (!n) fail(map, key.empty() ? name : key + "." + name, "missing");
-    return n;
-  }
-  double number(const YAML::Node& n, const std::string& key) const {
-    if (!n.IsScalar()) fail(n, key, "expected a number");
-    double v = 0.0;
-    try {
-      v = n.as<double>();
-    } catch (const YAML::Exception&) {
-      fail(n, key, "expected a number, got " + quoted_input(n.Scalar()));
-    }
-    if (!std::isfinite(v)) fail(n, key, "must be finite");
-    return v;
-  }
-  long long integer(const YAML::Node& n, const std::string& key) const {
-    const double v = number(n, key);
-    if (v != std::floor(v) || std::abs(v) > 1e15) fail(n, key, "expected an integer");
-    return static_cast<long long>(v);
-  }
-  Interval interval(const YAML::Node& n, const std::string& key) const {
-    if (!n.IsSequence() || n.size() != 2) fail(n, key, "expected [lower, upper]");
-    const double lo = number(n[0], key + "[0]"), hi = number(n[1], key + "[1]");
-    if (!(lo <= hi)) fail(n, key, "lower bound above upper bound");
-    return Interval(lo, hi);
-  }
-
- private:
-  std::string source_;
-};
+using Reader = YamlFields;  // (io/text/yaml_fields.h)
 
 EstimationProblem problem_from(const YAML::Node& root, const std::string& source) {
   const Reader r(source);

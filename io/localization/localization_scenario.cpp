@@ -12,6 +12,7 @@
 #include "io/format_error.h"
 #include "io/text/message_text.h"
 #include "io/text/strict_yaml.h"
+#include "io/text/yaml_fields.h"
 
 namespace gesmi::io {
 namespace {
@@ -20,76 +21,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr std::size_t kMaxNameLength = 200;
 
 // Reads one scenario, naming the file, line and key path in every error.
-class Reader {
- public:
-  explicit Reader(std::string source) : source_(std::move(source)) {}
-
-  [[noreturn]] void fail(const YAML::Node& node, const std::string& key, const std::string& reason) const {
-    const std::string line = node.IsDefined() && node.Mark().line >= 0 ? ":" + std::to_string(node.Mark().line + 1) : "";
-    throw FormatError(source_ + line + ": " + key + ": " + reason);
-  }
-
-  void only_keys(const YAML::Node& map, const std::string& key, std::set<std::string> allowed) const {
-    if (!map.IsMap()) fail(map, key, "expected a mapping");
-    for (const auto& entry : map) {
-      const std::string& name = entry.first.Scalar();  // keys are plain values (strict_yaml.h)
-      if (!allowed.count(name)) fail(entry.first, join(key, shown_key(name)), "unknown key");
-    }
-  }
-
-  YAML::Node required(const YAML::Node& map, const std::string& key, const std::string& name) const {
-    const YAML::Node n = map[name];
-    if (!n) fail(map, join(key, name), "missing");
-    return n;
-  }
-
-  double number(const YAML::Node& n, const std::string& key) const {
-    if (!n.IsScalar()) fail(n, key, "expected a number");
-    double v = 0.0;
-    try {
-      v = n.as<double>();
-    } catch (const YAML::Exception&) {
-      fail(n, key, "expected a number, got " + quoted_input(n.Scalar()));
-    }
-    if (!std::isfinite(v)) fail(n, key, "must be finite");
-    return v;
-  }
-  double number_or(const YAML::Node& map, const std::string& key, const std::string& name, double fallback) const {
-    return map[name] ? number(map[name], join(key, name)) : fallback;
-  }
-  long long integer(const YAML::Node& n, const std::string& key) const {
-    const double v = number(n, key);
-    if (v != std::floor(v) || std::abs(v) > 1e15) fail(n, key, "expected an integer");
-    return static_cast<long long>(v);
-  }
-  std::string text(const YAML::Node& n, const std::string& key) const {
-    if (!n.IsScalar()) fail(n, key, "expected a string");
-    return n.Scalar();
-  }
-  std::vector<double> numbers(const YAML::Node& n, const std::string& key, std::size_t count) const {
-    if (!n.IsSequence() || n.size() != count) fail(n, key, "expected a list of " + std::to_string(count) + " numbers");
-    std::vector<double> v;
-    for (std::size_t i = 0; i < count; ++i) v.push_back(number(n[i], key + "[" + std::to_string(i) + "]"));
-    return v;
-  }
-  Interval range(const YAML::Node& n, const std::string& key, double unit) const {
-    const std::vector<double> v = numbers(n, key, 2);
-    if (!(v[0] < v[1])) fail(n, key, "lower bound must be below upper bound");
-    return Interval(v[0] * unit, v[1] * unit);
-  }
-
-  static std::string join(const std::string& a, const std::string& b) { return a.empty() ? b : a + "." + b; }
-  // A key from the file as part of a key path: as it is when it is a plain name.
-  static std::string shown_key(const std::string& name) {
-    const bool plain = !name.empty() && name.size() <= kQuotedLength &&
-                       std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-    return plain ? name : quoted_input(name);
-  }
-  static std::string item(const std::string& key, std::size_t i) { return key + "[" + std::to_string(i) + "]"; }
-
- private:
-  std::string source_;
-};
+using Reader = YamlFields;
 
 void read_map(const Reader& r, const YAML::Node& root, LocalizationProblem& p) {
   const YAML::Node map = r.required(root, "", "map");

@@ -12,24 +12,15 @@
 
 #include "solver/setinv/hypotheses.h"
 #include "solver/setinv/outlier_sets.h"
+#include "tests/solver/setinv/gaussian_example.h"
 
 namespace gesmi {
 namespace {
 
-// Seed 004, Example 2: Gaussian density at t_i = 1..6 with interval data.
-struct GaussianDensity {
-  std::size_t output_count() const { return 6; }
-  template <class T>
-  void operator()(std::span<const T> p, std::span<T> y) const {
-    for (std::size_t i = 0; i < 6; ++i) {
-      const double t = static_cast<double>(i + 1);
-      y[i] = exp(-sqr(t - p[0]) / (2.0 * p[1])) / sqrt(2.0 * std::numbers::pi * p[1]);
-    }
-  }
-};
-const Box kGaussianData{Interval(0, 0.2), Interval(0.3, 2), Interval(0.3, 2),
-                        Interval(0.1, 0.2), Interval(0.4, 2), Interval(-1, 0.1)};
-const Box kGaussianFrame{Interval(-2, 8), Interval(0, 3)};
+// Seed 004, Example 2 (gaussian_example.h).
+using test::GaussianDensity;
+const Box& kGaussianData = test::gaussian_data();
+const Box& kGaussianFrame = test::gaussian_frame();
 
 int failures(const ImageInBox<GaussianDensity>& data, double p1, double p2, std::vector<std::size_t>* phi = nullptr) {
   const double p[2] = {p1, p2};
