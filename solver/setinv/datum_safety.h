@@ -31,6 +31,16 @@ struct DatumSafety {
 /// knowing S ⊆ S^(i).
 Interval safety_ratio(double inner, double outer, double inner_without, double outer_without);
 
+/// The safety of one datum from the pavings of S^(i), against S's volumes.
+inline DatumSafety datum_safety_from(const SiviaResult& without, double inner, double outer) {
+  DatumSafety s;
+  s.inner_volume = without.inner.volume();
+  s.outer_volume = s.inner_volume + without.boundary.volume();
+  s.limit_hit = without.report.limit_hit();
+  s.safety = safety_ratio(inner, outer, s.inner_volume, s.outer_volume);
+  return s;
+}
+
 /// A DatumTests with one datum discarded: it is reported consistent everywhere.
 template <DatumTests Data>
 class WithoutDatum {
@@ -56,13 +66,8 @@ std::vector<DatumSafety> datum_safety(Data& data, double estimate_inner_volume, 
   std::vector<DatumSafety> out;
   for (std::size_t i = 0; i < data.datum_count(); ++i) {
     WithoutDatum<Data> without(data, i);
-    const SiviaResult r = sivia_q(without, q, priors, options, prior);
-    DatumSafety s;
-    s.inner_volume = r.inner.volume();
-    s.outer_volume = s.inner_volume + r.boundary.volume();
-    s.limit_hit = r.report.limit_hit();
-    s.safety = safety_ratio(estimate_inner_volume, estimate_outer_volume, s.inner_volume, s.outer_volume);
-    out.push_back(s);
+    out.push_back(datum_safety_from(sivia_q(without, q, priors, options, prior), estimate_inner_volume,
+                                    estimate_outer_volume));
   }
   return out;
 }

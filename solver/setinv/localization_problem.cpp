@@ -181,12 +181,7 @@ std::vector<DatumSafety> localization_safety(const LocalizationProblem& problem,
     const LocalizationProblem reduced = without_datum(problem, i);
     LocalizationData data = make_data(reduced);
     const SiviaResult r = solve_fixed(reduced, data, std::min(result.q, static_cast<int>(reduced.datum_count())), options);
-    DatumSafety s;
-    s.inner_volume = r.inner.volume();
-    s.outer_volume = s.inner_volume + r.boundary.volume();
-    s.limit_hit = r.report.limit_hit();
-    s.safety = safety_ratio(inner, outer, s.inner_volume, s.outer_volume);
-    out.push_back(s);
+    out.push_back(datum_safety_from(r, inner, outer));
   }
   return out;
 }
