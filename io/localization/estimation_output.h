@@ -15,7 +15,8 @@ namespace gesmi::io {
 std::string estimation_summary(const EstimationProblem& problem, const EstimationResult& result);
 /// One hypothesis per outlier set of size q, for each level q.
 nlohmann::json estimation_summary_json(const EstimationProblem& problem, const EstimationResult& result);
-/// q,outliers,kind,p1_lo,p1_hi,p2_lo,p2_hi: one line per box of each set.
+/// q,outliers,kind,p1_lo,p1_hi,p2_lo,p2_hi: one line per box of each set (kind inner or
+/// boundary), then the level's unresolved boxes (outliers "?", kind unresolved).
 std::string estimation_boxes_csv(const EstimationResult& result);
 
 std::vector<std::string> estimation_output_files(const std::string& folder);

@@ -1,12 +1,16 @@
 #include "io/localization/estimation_scenario.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <span>
 
 #include "io/format_error.h"
+#include "io/imports/csv_number.h"
 #include "io/text/message_text.h"
 #include "io/text/strict_yaml.h"
 #include "io/text/yaml_fields.h"
+#include "solver/setinv/sivia.h"
 
 namespace gesmi::io {
 namespace {
@@ -28,6 +32,9 @@ EstimationProblem problem_from(const YAML::Node& root, const std::string& source
     r.fail(model, "model", "expected 'gaussian_density'" + (model.IsScalar() ? ", got " + quoted_input(model.Scalar()) : ""));
   const YAML::Node data = r.required(root, "", "data");
   if (!data.IsSequence() || data.size() == 0) r.fail(data, "data", "expected a non-empty list of {t, y: [lo, hi]}");
+  if (data.size() > EstimationProblem::kMaxData)  // memory grows with boxes x data (estimation_problem.h)
+    r.fail(data[EstimationProblem::kMaxData], "data", "at most " + std::to_string(EstimationProblem::kMaxData) +
+                                                          " data, got " + std::to_string(data.size()));
   for (std::size_t i = 0; i < data.size(); ++i) {
     const std::string key = "data[" + std::to_string(i + 1) + "]";  // numbered from 1, as the outputs
     r.only_keys(data[i], key, {"t", "y"});
@@ -42,14 +49,23 @@ EstimationProblem problem_from(const YAML::Node& root, const std::string& source
     if (!(p.prior[k].width() > 0.0)) r.fail(prior[k], key, "must have a positive width");
   }
   const YAML::Node solver = r.required(root, "", "solver");
-  r.only_keys(solver, "solver", {"epsilon", "max_boxes"});
+  r.only_keys(solver, "solver", {"epsilon", "max_boxes", "max_seconds"});
   p.epsilon = r.number(r.required(solver, "solver", "epsilon"), "solver.epsilon");
   if (!(p.epsilon > 0.0)) r.fail(solver["epsilon"], "solver.epsilon", "must be positive");
+  // Below this the bisection cannot meet epsilon near the prior's largest coordinates.
+  if (const double finest = finest_epsilon(std::span<const Box>(&p.prior, 1), {}); p.epsilon < finest)
+    r.fail(solver["epsilon"], "solver.epsilon",
+           format_number(p.epsilon) + " is finer than doubles can split over the prior box: at least " +
+               format_number(finest));
   if (solver["max_boxes"]) {
     const long long n = r.integer(solver["max_boxes"], "solver.max_boxes");
-    if (n <= 0) r.fail(solver["max_boxes"], "solver.max_boxes", "must be positive");
+    if (n <= 0 || static_cast<unsigned long long>(n) > EstimationProblem::kMaxBoxesCeiling)
+      r.fail(solver["max_boxes"], "solver.max_boxes",
+             "must be between 1 and " + std::to_string(EstimationProblem::kMaxBoxesCeiling) + " (memory grows with it)");
     p.max_boxes = static_cast<std::size_t>(n);
   }
+  p.max_seconds = r.number_or(solver, "solver", "max_seconds", p.max_seconds);
+  if (!(p.max_seconds > 0.0)) r.fail(solver["max_seconds"], "solver.max_seconds", "must be positive");
   const int n = static_cast<int>(p.t.size());
   if (const YAML::Node outliers = root["outliers"]) {
     r.only_keys(outliers, "outliers", {"levels"});
@@ -59,6 +75,8 @@ EstimationProblem problem_from(const YAML::Node& root, const std::string& source
       const std::string key = "outliers.levels[" + std::to_string(i) + "]";
       const long long q = r.integer(levels[i], key);
       if (q < 0 || q > n) r.fail(levels[i], key, "must be between 0 and " + std::to_string(n));
+      if (std::find(p.levels.begin(), p.levels.end(), q) != p.levels.end())
+        r.fail(levels[i], key, std::to_string(q) + " is listed twice");
       p.levels.push_back(static_cast<int>(q));
     }
   } else {

@@ -145,11 +145,11 @@ LocalizationResult localize(const LocalizationProblem& problem,
   refine_options.max_boxes = problem.max_boxes;
   OutlierPaving refined = refine_by_outliers(data, result.paving, refine_options, prior);
   result.refinement_boxes = refined.boxes_evaluated;
-  result.outlier_sets = partition_by_outlier_set(refined);
-  ComponentOptions component_options;
+  ComponentOptions component_options;  // theta wraps, in hypotheses and in the sets' hulls alike
   component_options.periodic_dimension = 2;
   component_options.period = kTwoPi;
   component_options.periodic_origin = problem.priors.front()[2].lo();
+  result.outlier_sets = partition_by_outlier_set(refined, component_options);
   for (PavingComponent& c : hypothesis_components(refined, component_options)) {
     LocalizationHypothesis h;
     h.outliers = component_outliers(data, refined, c, result.q, prior);

@@ -10,7 +10,9 @@
 // is the same at every point of S_q in it, and the boxes split by outlier set
 // (solver/setinv/outlier_set_pavings.h, solver/setinv/hypotheses.h).
 
+#include <chrono>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "solver/setinv/datum_tests.h"
@@ -27,8 +29,10 @@ struct OutlierRefinementOptions {
   /// Boxes narrower than epsilon (scaled widths) are not bisected.
   double epsilon = 0.01;
   std::vector<double> scale;
-  /// Bound on the boxes evaluated; past it, boxes are kept unrefined.
+  /// Bounds on the boxes evaluated and on the wall time (checked every 1,024 boxes);
+  /// past either, boxes are kept unrefined (the result still encloses S_q).
   std::size_t max_boxes = 1'000'000;
+  double max_seconds = std::numeric_limits<double>::infinity();
 };
 
 /// The refined enclosure of S_q: inner boxes lie in S_q (they came from an inner
@@ -39,7 +43,10 @@ struct OutlierPaving {
   Paving boundary;
   std::vector<OutlierFamily> families;
   std::size_t boxes_evaluated = 0;
-  bool limit_hit = false;  // max_boxes stopped the refinement: some boxes were kept as they were
+  // A limit stopped the refinement: some boxes that could be split were kept as they were.
+  bool box_limit_hit = false;
+  bool time_limit_hit = false;
+  bool limit_hit() const { return box_limit_hit || time_limit_hit; }
 
   std::size_t size() const { return inner.size() + boundary.size(); }
   bool inside(std::size_t i) const { return i < inner.size(); }
@@ -52,21 +59,26 @@ template <DatumTests Data, class Prior>
 class OutlierRefiner {
  public:
   OutlierRefiner(Data& data, const Prior& prior, const OutlierRefinementOptions& options)
-      : data_(data), prior_(prior), options_(options), values_(data.datum_count(), IBool::maybe()) {}
+      : data_(data), prior_(prior), options_(options), values_(data.datum_count(), IBool::maybe()),
+        start_(std::chrono::steady_clock::now()) {}
 
   void refine(Box& box, bool known_inside, int depth) {
     const IBool g = known_inside ? IBool(true) : IBool(prior_(box));
     if (g.is_false() || g.is_empty()) return;
     ++result_.boxes_evaluated;
+    const bool stopped = limit_reached();  // at every box, so that every 1,024th box checks the time
     data_.evaluate(box, depth, values_, options_.q);
     OutlierFamily family(values_, options_.q_lower, options_.q);
     if (family.empty()) return;
     const DatumCounts c = count_data(values_);
     const bool inside = known_inside || (static_cast<int>(values_.size()) - c.yes <= options_.q && g.is_true());
     const auto [dim, width] = widest_dimension(box, options_.scale);
-    if (family.single() || width < options_.epsilon || !can_bisect(box, options_.scale) ||
-        result_.boxes_evaluated >= options_.max_boxes) {
-      result_.limit_hit = result_.limit_hit || (!family.single() && result_.boxes_evaluated >= options_.max_boxes);
+    const bool splittable = !family.single() && width >= options_.epsilon && can_bisect(box, options_.scale);
+    if (!splittable || stopped) {
+      if (splittable) {  // kept only because of a limit: say which
+        result_.box_limit_hit = result_.box_limit_hit || box_limit_;
+        result_.time_limit_hit = result_.time_limit_hit || time_limit_;
+      }
       (inside ? result_.inner : result_.boundary).add(box);
       (inside ? inner_families_ : boundary_families_).push_back(std::move(family));
       return;
@@ -92,10 +104,21 @@ class OutlierRefiner {
   void seed(const Box& hull) { data_.evaluate(hull, 0, values_, static_cast<int>(values_.size())); }
 
  private:
+  // Once a limit is reached it stays reached: the remaining boxes are kept as they are.
+  bool limit_reached() {
+    if (result_.boxes_evaluated >= options_.max_boxes) box_limit_ = true;
+    if ((result_.boxes_evaluated & 1023u) == 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() > options_.max_seconds)
+      time_limit_ = true;
+    return box_limit_ || time_limit_;
+  }
+
   Data& data_;
   const Prior& prior_;
   const OutlierRefinementOptions& options_;
   std::vector<IBool> values_;
+  std::chrono::steady_clock::time_point start_;
+  bool box_limit_ = false, time_limit_ = false;
   OutlierPaving result_;
   std::vector<OutlierFamily> inner_families_, boundary_families_;
 };

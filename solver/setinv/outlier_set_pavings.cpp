@@ -4,9 +4,21 @@
 #include <map>
 
 namespace gesmi {
+namespace {
 
-OutlierPartition partition_by_outlier_set(const OutlierPaving& refined, std::size_t max_sets_per_box) {
+Interval periodic_hull(const OutlierSetPaving& s, std::size_t dim, const ComponentOptions& periodic) {
+  std::vector<Interval> arcs;
+  for (const Paving* p : {&s.inner, &s.boundary})
+    for (std::size_t i = 0; i < p->size(); ++i) arcs.push_back(p->box(i)[dim]);
+  return wrapped_hull(arcs, periodic.period, periodic.periodic_origin);
+}
+
+}  // namespace
+
+OutlierPartition partition_by_outlier_set(const OutlierPaving& refined, const ComponentOptions& periodic,
+                                          std::size_t max_sets_per_box) {
   const std::size_t dim = refined.inner.dim();
+  const int pd = periodic.periodic_dimension;
   OutlierPartition out;
   out.unresolved = Paving(dim);
   // Ordered by size first, as the seed's panels are.
@@ -29,7 +41,10 @@ OutlierPartition partition_by_outlier_set(const OutlierPaving& refined, std::siz
       for (std::size_t k = 0; k < dim; ++k) s.hull[k] = hull(s.hull[k], refined.box(i)[k]);
     }
   }
-  for (auto& [o, s] : sets) out.sets.push_back(std::move(s));
+  for (auto& [o, s] : sets) {
+    if (pd >= 0) s.hull[static_cast<std::size_t>(pd)] = periodic_hull(s, static_cast<std::size_t>(pd), periodic);
+    out.sets.push_back(std::move(s));
+  }
   return out;
 }
 

@@ -11,10 +11,15 @@
 // a boundary box of each of its sets). Boxes with more than `max_sets_per_box`
 // sets are listed as unresolved instead. The union of every P_O's boxes and the
 // unresolved boxes is the refined enclosure.
+//
+// Hulls are reported as components' are (components.h): on a periodic dimension
+// (theta) the shortest arc, so a set straddling the period's cut is not given the
+// whole turn.
 
 #include <cstddef>
 #include <vector>
 
+#include "solver/setinv/components.h"
 #include "solver/setinv/outlier_refinement.h"
 
 namespace gesmi {
@@ -23,7 +28,7 @@ struct OutlierSetPaving {
   OutlierSet outliers;
   Paving inner;
   Paving boundary;
-  Box hull;  // of inner and boundary (plain hull: no wrapping of periodic dimensions)
+  Box hull;  // of inner and boundary; on the periodic dimension the shortest arc (wrapped_hull)
   double inner_volume() const { return inner.volume(); }
   double outer_volume() const { return inner.volume() + boundary.volume(); }
 };
@@ -33,7 +38,10 @@ struct OutlierPartition {
   Paving unresolved;                   // boxes fitting too many sets to list
 };
 
-OutlierPartition partition_by_outlier_set(const OutlierPaving& refined, std::size_t max_sets_per_box = 64);
+/// `periodic` names the periodic dimension, its period and the window of the hulls
+/// (its wrap_tolerance is not used); the default has none.
+OutlierPartition partition_by_outlier_set(const OutlierPaving& refined, const ComponentOptions& periodic = {},
+                                          std::size_t max_sets_per_box = 64);
 
 /// The sets of exactly `size` outliers (seed 004's j^{-1}(q) for size = q).
 std::vector<OutlierSetPaving> sets_of_size(const OutlierPartition& partition, std::size_t size);

@@ -10,10 +10,10 @@ import pytest
 
 import gesmi
 from conftest import run_gesmi
+from seed004_example2 import EXAMPLE2, grid_sets
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 WAREHOUSE = os.path.join(ROOT, "missions", "localization", "warehouse_p04_outliers.yaml")
-EXAMPLE2 = os.path.join(ROOT, "missions", "setinv", "seed004_example2.yaml")
 # The bearings given outlier values when the scenario was simulated
 # (`--bearing-outliers 3,8`, its description): every datum is a bearing.
 INJECTED = [3, 8]
@@ -57,23 +57,6 @@ def test_summary_json_numbers_data_from_1_as_in_the_file(tmp_path, warehouse):
     assert [d["datum"] for d in s["safety"]] == list(range(1, 14))
     lo = [d["safety"][0] for d in s["safety"]]
     assert np.allclose(lo, np.array(warehouse["safety"])[:, 0])
-
-
-def grid_sets():
-    """Outlier sets (from 1) of Example 2 met on a grid of the frame, by size."""
-    lo = np.array([0, 0.3, 0.3, 0.1, 0.4, -1])
-    hi = np.array([0.2, 2, 2, 0.2, 2, 0.1])
-    p1, p2 = np.meshgrid(np.linspace(-2, 8, 1001), np.linspace(0.003, 3, 1000), indexing="ij")
-    codes = np.zeros(p1.shape, dtype=int)
-    for i in range(6):
-        t = i + 1
-        f = np.exp(-(t - p1) ** 2 / (2 * p2)) / np.sqrt(2 * np.pi * p2)
-        codes |= ((f < lo[i]) | (f > hi[i])).astype(int) << i
-    sets = {}
-    for code in np.unique(codes):
-        s = [i + 1 for i in range(6) if code >> i & 1]
-        sets.setdefault(len(s), set()).add(tuple(s))
-    return sets
 
 
 def test_estimate_example2_proves_the_sets_of_the_grid(tmp_path):

@@ -75,6 +75,27 @@ TEST(Progress, SimulateExportAndImportShowTheirPhases) {
   expect_phase(out, "gesmi import: ", "reading nav.csv");
 }
 
+// gesmi estimate on seed 004's Example 2 (about a second, seven levels): the level and
+// the boxes examined on a terminal, cleared before the summary; nothing with -q.
+TEST(Progress, EstimateShowsItsLevelsAndKeepsQuietWithQ) {
+  const std::string dir = temp_folder("progress-estimate");
+  const std::string command =
+      std::string(GESMI_BIN_DIR) + "/gesmi estimate " + source_dir() + "/missions/setinv/seed004_example2.yaml -o " + dir;
+  auto [code, out] = on_terminal(command + "/e1");
+  ASSERT_EQ(code, 0) << out;
+  EXPECT_NE(out.find("\r\033[Kgesmi estimate: "), std::string::npos) << out;
+  EXPECT_NE(out.find(" of 7): "), std::string::npos) << out;  // "q = 3 (level 4 of 7): 61852 boxes examined"
+  const std::size_t last = out.rfind("gesmi estimate: ");
+  ASSERT_NE(last, std::string::npos);
+  EXPECT_NE(out.find("\r\033[K", last), std::string::npos) << out.substr(last);
+  EXPECT_NE(out.find("s in all"), std::string::npos) << out;  // the summary follows
+
+  std::tie(code, out) = on_terminal(command + "/e2 -q");
+  ASSERT_EQ(code, 0) << out;
+  EXPECT_EQ(out.find("gesmi estimate: "), std::string::npos) << out;
+  EXPECT_EQ(out.find('\r'), std::string::npos) << out;
+}
+
 TEST(Progress, AQuickCommandDrawsNothingOnATerminal) {
   const std::string dir = temp_folder("progress-quick");
   ASSERT_EQ(run_gesmi({"simulate", "--seed", "3", "--duration", "60", "-o", dir + "/m.h5"}).exit_code, 0);

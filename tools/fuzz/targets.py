@@ -23,11 +23,15 @@ def _run(gesmi, args, cwd):
 
 
 def _scenario_seed(source, target):
-    """A localization scenario bounded in time and boxes, so that a mutated epsilon
-    cannot make a case run for minutes."""
+    """A localization or estimation scenario bounded in time and boxes, so that a
+    mutated epsilon cannot make a case run for minutes. Its `solver` mapping is in
+    block style (localization) or flow style (estimation)."""
     with open(source, "rb") as f:
         text = f.read()
-    text = re.sub(rb"\nsolver:\n", b"\nsolver:\n  max_seconds: 2\n  max_boxes: 200000\n", text, count=1)
+    text, block = re.subn(rb"\nsolver:\n", b"\nsolver:\n  max_seconds: 2\n  max_boxes: 200000\n", text, count=1)
+    text, flow = re.subn(rb"\nsolver: \{", b"\nsolver: {max_seconds: 2, max_boxes: 200000, ", text, count=1)
+    if block + flow != 1:
+        raise RuntimeError("seed scenario %s: no 'solver:' mapping to bound" % source)
     with open(target, "wb") as f:
         f.write(text)
 
@@ -48,6 +52,7 @@ def make_seeds(gesmi, repo, folder):
     _run(gesmi, ["import", "gesmi-txt", "redermor.txt", "--marks", "marks10.csv", "-o", "txt_mission.h5"], folder)
     for name in ("triangle_two_hypotheses", "warehouse_p02", "warehouse_p04_outliers"):
         _scenario_seed(os.path.join(repo, "missions/localization", name + ".yaml"), os.path.join(folder, name + ".yaml"))
+    _scenario_seed(os.path.join(repo, "missions/setinv/seed004_example2.yaml"), os.path.join(folder, "seed004_example2.yaml"))
     with open(os.path.join(folder, "small.yaml"), "w") as f:
         f.write("heading: 0.006  # rad\nsonar_side: starboard\ndvl_relative: 0.005\n")
     seeds = {}
@@ -121,6 +126,9 @@ READERS = [
     Reader("yaml:scenario", "yaml", ["triangle_two_hypotheses.yaml", "warehouse_p02.yaml", "warehouse_p04_outliers.yaml"],
            [["localize", "@", "-o", "out", "-q"], ["localize", "@", "--simulate", "--seed", "4"]], "scenario.yaml",
            [["out"], []]),
+    Reader("yaml:estimation", "yaml", ["seed004_example2.yaml"],
+           [["estimate", "@", "-o", "out", "-q"], ["estimate", "@", "-o", "out", "--json"]], "estimation.yaml",
+           [["out"], ["out"]]),
     # Without the other CSV files: their cross-checks against the navigation (a GPS fix
     # or a truth row outside a shortened log) name the other file, rightly.
     Reader("csv:nav", "csv", ["csv/nav.csv"],

@@ -12,6 +12,7 @@
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/command_report.h"
 #include "tools/gesmi/input_files.h"
+#include "tools/gesmi/progress.h"
 #include "tools/gesmi/skip_existing.h"
 
 namespace gesmi::cli {
@@ -26,7 +27,7 @@ int run_estimate(std::span<const std::string> args) {
   options.add_options()
       ("scenario", po::value<std::string>(), "estimation scenario file (YAML)")
       ("output,o", po::value<std::string>(), "output folder (created if missing)")
-      ("quiet,q", "do not print the summary");
+      ("quiet,q", "print neither the summary nor the progress line");
   add_json_option(options);
   add_skip_existing(options);
   po::positional_options_description positional;
@@ -40,10 +41,17 @@ int run_estimate(std::span<const std::string> args) {
   io::OutputSet outputs(input_files(values, {"scenario"}));
   io::OutputSet::check_folder(folder);
   if (skipped_as_existing(values, "estimate", io::estimation_output_files(folder))) return kExitOk;
-  const EstimationResult result = estimate(problem);
+  Progress progress("gesmi estimate:", values.count("quiet") > 0);  // on a terminal, for long runs only (progress.h)
+  const EstimationResult result = estimate(problem, [&](const EstimationProgress& p) {
+    progress.update(static_cast<double>(p.level) / static_cast<double>(p.level_count),
+                    "q = " + std::to_string(p.q) + " (level " + std::to_string(p.level + 1) + " of " +
+                        std::to_string(p.level_count) + "): " + std::to_string(p.boxes_examined) + " boxes examined");
+  });
+  progress.update(1.0, "writing " + folder);
   outputs.prepare_folder(folder);
   const std::vector<std::string> written = io::write_estimation_outputs(folder, problem, result);
   outputs.commit();
+  progress.finish();
   CommandReport report("estimate", values);
   if (report.enabled()) {
     report.inputs(values, {"scenario"});

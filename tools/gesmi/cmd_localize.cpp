@@ -66,7 +66,7 @@ int run_localize(std::span<const std::string> args) {
   options.add_options()
       ("scenario", po::value<std::string>(), "scenario file (YAML)")
       ("output,o", po::value<std::string>(), "output folder (created if missing)")
-      ("quiet,q", "do not print the summary")
+      ("quiet,q", "print neither the summary nor the progress line")
       ("safety", "also compute Remark 6's safety of each datum (one more SIVIA per datum)")
       ("simulate", "print measurements simulated at the scenario's true pose, write nothing")
       ("seed", po::value<std::string>()->default_value("1"), "--simulate: random seed")
@@ -90,7 +90,7 @@ int run_localize(std::span<const std::string> args) {
   io::OutputSet outputs(input_files(values, {"scenario"}));
   io::OutputSet::check_folder(folder);  // before the search, which can be long
   if (skipped_as_existing(values, "localize", io::localization_output_files(folder))) return kExitOk;
-  Progress progress("gesmi localize:");  // on a terminal, for long searches only (progress.h)
+  Progress progress("gesmi localize:", values.count("quiet") > 0);  // on a terminal, for long searches only (progress.h)
   progress.update(-1.0, "searching");
   LocalizationResult result = localize(problem, [&](const SiviaProgress& p) {
     progress.update(-1.0, "searching: " + std::to_string(p.boxes_visited) + " boxes, " + std::to_string(p.inner_boxes) +

@@ -12,7 +12,8 @@ constexpr auto kDelay = std::chrono::milliseconds(300);
 constexpr auto kPeriod = std::chrono::milliseconds(100);
 }  // namespace
 
-Progress::Progress(std::string label) : label_(std::move(label)), enabled_(::isatty(STDERR_FILENO) == 1) {
+Progress::Progress(std::string label, bool quiet)
+    : label_(std::move(label)), enabled_(!quiet && ::isatty(STDERR_FILENO) == 1) {
   if (enabled_) redrawer_ = std::thread([this] { redraw_until_finished(); });
 }
 

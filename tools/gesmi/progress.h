@@ -15,7 +15,8 @@ namespace gesmi::cli {
 
 class Progress {
  public:
-  explicit Progress(std::string label);
+  /// `quiet` (a command's --quiet) keeps it off on a terminal too.
+  explicit Progress(std::string label, bool quiet = false);
   ~Progress();
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;

@@ -7,20 +7,6 @@
 #include "tools/python/bindings.h"
 
 namespace gesmi::python {
-namespace {
-
-py::array_t<double> boxes(const Paving& paving) {
-  py::array_t<double> out({static_cast<py::ssize_t>(paving.size()), static_cast<py::ssize_t>(paving.dim()), py::ssize_t{2}});
-  auto a = out.mutable_unchecked<3>();
-  for (std::size_t i = 0; i < paving.size(); ++i)
-    for (std::size_t c = 0; c < paving.dim(); ++c) {
-      a(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c), 0) = paving.box(i)[c].lo();
-      a(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c), 1) = paving.box(i)[c].hi();
-    }
-  return out;
-}
-
-}  // namespace
 
 void bind_localize(py::module_& m) {
   m.def(
@@ -36,8 +22,8 @@ void bind_localize(py::module_& m) {
         py::dict out;
         out["found"] = r.found;
         out["q"] = r.q;
-        out["inner"] = boxes(r.paving.inner);
-        out["boundary"] = boxes(r.paving.boundary);
+        out["inner"] = paving_boxes(r.paving.inner);
+        out["boundary"] = paving_boxes(r.paving.boundary);
         out["truth_enclosed"] = r.truth_enclosed;
         out["seconds"] = r.seconds;
         py::list hypotheses;
@@ -62,15 +48,15 @@ void bind_localize(py::module_& m) {
         for (const OutlierSetPaving& s : r.outlier_sets.sets) {
           py::dict d;
           d["outliers"] = s.outliers;
-          d["inner"] = boxes(s.inner);
-          d["boundary"] = boxes(s.boundary);
+          d["inner"] = paving_boxes(s.inner);
+          d["boundary"] = paving_boxes(s.boundary);
           std::vector<std::pair<double, double>> hull;
           for (const Interval& x : s.hull) hull.emplace_back(x.lo(), x.hi());
           d["hull"] = hull;
           sets.append(d);
         }
         out["outlier_sets"] = sets;
-        out["unresolved"] = boxes(r.outlier_sets.unresolved);
+        out["unresolved"] = paving_boxes(r.outlier_sets.unresolved);
         if (!r.safety.empty()) {
           std::vector<std::pair<double, double>> per_datum;
           for (const DatumSafety& s : r.safety) per_datum.emplace_back(s.safety.lo(), s.safety.hi());

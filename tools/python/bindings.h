@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "solver/interval/interval.h"
+#include "solver/setinv/paving.h"
 
 namespace gesmi::python {
 
@@ -18,6 +19,7 @@ void bind_mission(py::module_& m);
 void bind_solve(py::module_& m);
 void bind_kalman(py::module_& m);
 void bind_localize(py::module_& m);
+void bind_estimate(py::module_& m);
 
 /// A numpy view of a vector (rows x columns, row-major), kept alive by `owner`.
 template <class T>
@@ -36,6 +38,18 @@ inline py::array_t<double> interval_view(std::vector<Interval>& v, py::handle ow
   return py::array_t<double>({static_cast<py::ssize_t>(v.size()), py::ssize_t{2}},
                              {static_cast<py::ssize_t>(sizeof(Interval)), static_cast<py::ssize_t>(sizeof(double))},
                              reinterpret_cast<double*>(v.data()), owner);
+}
+
+/// The boxes of a paving as a (B, dim, 2) numpy array of [lower, upper] (a copy).
+inline py::array_t<double> paving_boxes(const Paving& paving) {
+  py::array_t<double> out({static_cast<py::ssize_t>(paving.size()), static_cast<py::ssize_t>(paving.dim()), py::ssize_t{2}});
+  auto a = out.mutable_unchecked<3>();
+  for (std::size_t i = 0; i < paving.size(); ++i)
+    for (std::size_t c = 0; c < paving.dim(); ++c) {
+      a(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c), 0) = paving.box(i)[c].lo();
+      a(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c), 1) = paving.box(i)[c].hi();
+    }
+  return out;
 }
 
 /// A copy of a 1-D numpy array (any numeric type) as a vector.

@@ -1,6 +1,6 @@
 // The gesmi Python module: reading and writing missions and results, simulate,
-// solve (every mode of SolveOptions), kalman and localize. docs/python.md shows a
-// session. Bad input raises gesmi.FormatError, a ValueError carrying the same
+// solve (every mode of SolveOptions), kalman, localize and estimate. docs/python.md
+// shows a session. Bad input raises gesmi.FormatError, a ValueError carrying the same
 // one-line message as the command line.
 
 #include "io/format_error.h"
@@ -23,4 +23,5 @@ PYBIND11_MODULE(gesmi, m) {
   gesmi::python::bind_solve(m);
   gesmi::python::bind_kalman(m);
   gesmi::python::bind_localize(m);
+  gesmi::python::bind_estimate(m);
 }

@@ -32,7 +32,7 @@ bool holds(std::span<const Interval> box, double x, double y) { return box[0].co
 
 TEST(OutlierRefinement, StillEnclosesTheSetAndStaysInsideSiviasBoxes) {
   const Example2 e;
-  ASSERT_FALSE(e.refined.limit_hit);
+  ASSERT_FALSE(e.refined.limit_hit());
   ASSERT_GT(e.refined.inner.size(), 0u);
   for (int i = 0; i <= 500; ++i)
     for (int k = 0; k < 300; ++k) {

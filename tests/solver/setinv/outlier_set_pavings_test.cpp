@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numbers>
 #include <set>
 
 #include "tests/solver/setinv/gaussian_example.h"
@@ -102,6 +103,33 @@ TEST(OutlierSetPavings, TheUnionOfThePartitionIsTheRefinedEnclosure) {
   for (const OutlierSetPaving& s : e.partition.sets)
     for (std::size_t i = 0; i < s.inner.size(); ++i, ++inner_count) inner.insert(key(s.inner.box(i)));
   EXPECT_EQ(inner.size(), inner_count);
+}
+
+TEST(OutlierSetPavings, HullOfASetAcrossThePeriodIsTheShortArc) {
+  // Two boxes of the set {0} (datum 0 certainly fails, datum 1 certainly holds), one
+  // ending at 2 pi and one starting at 0: on the circle they are the arc [-0.1, 0.1].
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  OutlierPaving refined;
+  refined.inner = refined.boundary = Paving(3);
+  refined.inner.add(Box{Interval(0.0, 1.0), Interval(2.0, 3.0), Interval(kTwoPi - 0.1, kTwoPi)});
+  refined.inner.add(Box{Interval(0.5, 1.5), Interval(2.0, 3.0), Interval(0.0, 0.1)});
+  const std::vector<IBool> values{IBool(false), IBool(true)};
+  refined.families.assign(2, OutlierFamily(values, 0, 1));
+  ComponentOptions wrap;  // as gesmi localize, for a prior theta in [0, 2 pi]
+  wrap.periodic_dimension = 2;
+  wrap.period = kTwoPi;
+  wrap.periodic_origin = 0.0;
+
+  const OutlierPartition p = partition_by_outlier_set(refined, wrap);
+  ASSERT_EQ(p.sets.size(), 1u);
+  EXPECT_EQ(p.sets[0].outliers, OutlierSet{0});
+  EXPECT_EQ(p.sets[0].inner.size(), 2u);
+  EXPECT_NEAR(p.sets[0].hull[2].lo(), -0.1, 1e-12);
+  EXPECT_NEAR(p.sets[0].hull[2].hi(), 0.1, 1e-12);
+  EXPECT_EQ(p.sets[0].hull[0], Interval(0.0, 1.5));  // the other dimensions keep the plain hull
+  EXPECT_EQ(p.sets[0].hull[1], Interval(2.0, 3.0));
+  // Without a periodic dimension the same boxes span the whole turn.
+  EXPECT_EQ(partition_by_outlier_set(refined).sets[0].hull[2], Interval(0.0, kTwoPi));
 }
 
 }  // namespace
