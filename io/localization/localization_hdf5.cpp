@@ -36,8 +36,10 @@ constexpr DatasetUnits kLocalizationUnits[] = {
     {"/components/outliers_determined", "1", "1 when the hypothesis holds exactly one outlier set, proved present (the list of its sets is complete)"},
     {"/components/outliers", "1", "1 where the datum (ranges first, then bearings) is an outlier in every set the hypothesis may hold (agreed outlier)"},
     {"/data/range_sensor", "1", "range sensor of each range measurement"},
-    {"/data/range", "m", "measured range d (feasible: [d (1 - precision), d (1 + precision)])"},
+    {"/data/range", "m", "measured range d (feasible: [d (1 - precision), d (1 + precision)]); +inf: no echo within the sensor's max range"},
     {"/data/range_precision", "1", "relative precision of each range measurement's sensor"},
+    {"/data/range_max_range", "m", "max range of each range measurement's sensor (+inf: none; feasible set of no echo: [max_range (1 - precision), +inf])"},
+    {"/data/range_blind_distance", "m", "blind distance of each range measurement's sensor (0: none)"},
     {"/data/bearing_sensor", "1", "bearing sensor of each bearing measurement"},
     {"/data/bearing", "rad", "measured bearing in the sensor frame"},
     {"/data/bearing_precision", "rad", "half-width of each bearing measurement's sensor"},
@@ -46,11 +48,13 @@ constexpr DatasetUnits kLocalizationUnits[] = {
 // The data and the sensors' precisions the pavings were computed from.
 void write_data(H5File& file, const LocalizationProblem& p) {
   std::vector<std::int32_t> range_sensor, bearing_sensor;
-  std::vector<double> range, range_precision, bearing, bearing_precision;
+  std::vector<double> range, range_precision, range_max_range, range_blind_distance, bearing, bearing_precision;
   for (const RangeMeasurement& m : p.ranges) {
     range_sensor.push_back(static_cast<std::int32_t>(m.sensor));
     range.push_back(m.range);
     range_precision.push_back(p.range_sensors[m.sensor].precision);
+    range_max_range.push_back(p.range_sensors[m.sensor].max_range);
+    range_blind_distance.push_back(p.range_sensors[m.sensor].blind_distance);
   }
   for (const BearingMeasurement& m : p.bearings) {
     bearing_sensor.push_back(static_cast<std::int32_t>(m.sensor));
@@ -60,6 +64,8 @@ void write_data(H5File& file, const LocalizationProblem& p) {
   file.write("/data/range_sensor", range_sensor, range_sensor.size());
   file.write("/data/range", range, range.size());
   file.write("/data/range_precision", range_precision, range_precision.size());
+  file.write("/data/range_max_range", range_max_range, range_max_range.size());
+  file.write("/data/range_blind_distance", range_blind_distance, range_blind_distance.size());
   file.write("/data/bearing_sensor", bearing_sensor, bearing_sensor.size());
   file.write("/data/bearing", bearing, bearing.size());
   file.write("/data/bearing_precision", bearing_precision, bearing_precision.size());

@@ -10,6 +10,7 @@
 #include "io/localization/localization_hdf5.h"
 #include "io/localization/localization_json.h"
 #include "io/plot/localization_picture.h"
+#include "solver/setinv/range_data.h"
 
 namespace gesmi::io {
 namespace {
@@ -62,10 +63,16 @@ std::string safety_lines(const LocalizationProblem& p, const LocalizationResult&
   return s;
 }
 
+/// What explains a range datum: a wall, "beyond" (a "no echo": no wall within range), "-" nothing.
+std::string range_association(int wall) {
+  if (wall == kNoWallInRange) return "beyond";
+  return wall < 0 ? "-" : "w" + std::to_string(wall);
+}
+
 std::string association_text(const LocalizationProblem& p, const LocalizationHypothesis& h) {
   std::string s;
   for (std::size_t i = 0; i < h.range_walls.size(); ++i)
-    s += (s.empty() ? "" : " ") + datum_name(p, i) + ":" + (h.range_walls[i] < 0 ? "-" : "w" + std::to_string(h.range_walls[i]));
+    s += (s.empty() ? "" : " ") + datum_name(p, i) + ":" + range_association(h.range_walls[i]);
   for (std::size_t m = 0; m < h.bearing_landmarks.size(); ++m)
     s += (s.empty() ? "" : " ") + datum_name(p, p.ranges.size() + m) + ":" +
          (h.bearing_landmarks[m] < 0 ? "-" : "L" + std::to_string(h.bearing_landmarks[m]));

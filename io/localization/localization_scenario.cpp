@@ -19,6 +19,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr std::size_t kMaxNameLength = 200;
+constexpr const char* kNoEchoText = "none";  // `range: none`: the sonar heard no echo
 
 // Reads one scenario, naming the file, line and key path in every error.
 using Reader = YamlFields;
@@ -59,13 +60,20 @@ SensorIndex read_sensors(const Reader& r, const YAML::Node& root, LocalizationPr
     const double x = r.number_or(s, key, "x", 0.0), y = r.number_or(s, key, "y", 0.0);
     const double heading = r.number_or(s, key, "heading_deg", 0.0) * kDeg;
     if (type == "range") {
-      r.only_keys(s, key, {"name", "type", "x", "y", "heading_deg", "half_aperture_deg", "precision"});
+      r.only_keys(s, key, {"name", "type", "x", "y", "heading_deg", "half_aperture_deg", "precision", "max_range", "blind_distance"});
       const double gamma = r.number(r.required(s, key, "half_aperture_deg"), key + ".half_aperture_deg");
       if (!(gamma > 0.0 && gamma < 45.0)) r.fail(s["half_aperture_deg"], key + ".half_aperture_deg", "must be in (0, 45) degrees");
       const double alpha = r.number(r.required(s, key, "precision"), key + ".precision");
       if (!(alpha >= 0.0 && alpha < 1.0)) r.fail(s["precision"], key + ".precision", "relative precision must be in [0, 1)");
+      RangeSensor sensor{name, x, y, heading, gamma * kDeg, alpha};
+      sensor.max_range = r.number_or(s, key, "max_range", sensor.max_range);
+      if (!(sensor.max_range > 0.0)) r.fail(s["max_range"], key + ".max_range", "must be positive");
+      sensor.blind_distance = r.number_or(s, key, "blind_distance", 0.0);
+      if (!(sensor.blind_distance >= 0.0)) r.fail(s["blind_distance"], key + ".blind_distance", "must not be negative");
+      if (!(sensor.blind_distance < sensor.max_range))
+        r.fail(s["blind_distance"], key + ".blind_distance", "must be below max_range " + format_number(sensor.max_range));
       index[name] = {true, p.range_sensors.size()};
-      p.range_sensors.push_back({name, x, y, heading, gamma * kDeg, alpha});
+      p.range_sensors.push_back(std::move(sensor));
     } else if (type == "bearing") {
       r.only_keys(s, key, {"name", "type", "x", "y", "heading_deg", "precision_deg"});
       const double delta = r.number(r.required(s, key, "precision_deg"), key + ".precision_deg");
@@ -91,8 +99,18 @@ void read_measurements(const Reader& r, const YAML::Node& root, const SensorInde
     if (found == index.end()) r.fail(m["sensor"], key + ".sensor", "unknown sensor " + quoted_input(sensor));
     if (found->second.first) {
       r.only_keys(m, key, {"sensor", "range"});
-      const double d = r.number(r.required(m, key, "range"), key + ".range");
-      if (!(d > 0.0)) r.fail(m["range"], key + ".range", "must be positive");
+      const RangeSensor& s = p.range_sensors[found->second.second];
+      const YAML::Node range = r.required(m, key, "range");
+      double d = kNoEcho;
+      if (range.IsScalar() && range.Scalar() == kNoEchoText) {
+        if (!s.has_max_range()) r.fail(range, key + ".range", "'none' (no echo) needs a max_range on sensor " + quoted_input(s.name));
+      } else {
+        d = r.number(range, key + ".range");
+        if (!(d > 0.0)) r.fail(range, key + ".range", "must be positive");
+        if (d > s.max_range)
+          r.fail(range, key + ".range", "beyond the max_range " + format_number(s.max_range) + " of sensor " +
+                                            quoted_input(s.name) + " (no echo is written 'none')");
+      }
       p.ranges.push_back({found->second.second, d});
       range_numbers.push_back(i + 1);
     } else {
@@ -231,7 +249,14 @@ std::string localization_measurements_yaml(const LocalizationProblem& p) {
   std::ostringstream out;
   out.precision(10);
   out << "measurements:\n";
-  for (const RangeMeasurement& m : p.ranges) out << "  - {sensor: " << p.range_sensors[m.sensor].name << ", range: " << m.range << "}\n";
+  for (const RangeMeasurement& m : p.ranges) {
+    out << "  - {sensor: " << p.range_sensors[m.sensor].name << ", range: ";
+    if (m.no_echo())
+      out << kNoEchoText;
+    else
+      out << m.range;
+    out << "}\n";
+  }
   for (const BearingMeasurement& m : p.bearings)
     out << "  - {sensor: " << p.bearing_sensors[m.sensor].name << ", bearing_deg: " << m.bearing / kDeg << "}\n";
   return out.str();

@@ -83,15 +83,25 @@ std::string LocalizationProblem::validate() const {
   }
   for (const RangeMeasurement& m : ranges) {
     if (m.sensor >= range_sensors.size()) return "range measurement of an unknown sensor";
-    if (!(m.range > 0.0) || !std::isfinite(m.range)) return "ranges must be positive and finite";
+    const RangeSensor& s = range_sensors[m.sensor];
+    if (m.no_echo()) {
+      if (!s.has_max_range()) return "range sensor " + s.name + ": 'no echo' needs a max_range";
+    } else if (!(m.range > 0.0) || !std::isfinite(m.range)) {
+      return "ranges must be positive and finite";
+    } else if (m.range > s.max_range) {
+      return "range sensor " + s.name + ": a range beyond max_range is 'no echo'";
+    }
   }
   for (const BearingMeasurement& m : bearings) {
     if (m.sensor >= bearing_sensors.size()) return "bearing measurement of an unknown sensor";
     if (auto e = check_angle(m.bearing, "bearings"); !e.empty()) return e;
   }
-  for (const RangeSensor& s : range_sensors)
+  for (const RangeSensor& s : range_sensors) {
     if (!(s.half_aperture > 0.0 && s.half_aperture < std::numbers::pi / 4) || !(s.precision >= 0.0 && s.precision < 1.0))
       return "range sensor " + s.name + ": half aperture must be in (0, 45) degrees and precision in [0, 1)";
+    if (!(s.max_range > 0.0) || !(s.blind_distance >= 0.0) || !(s.blind_distance < s.max_range))
+      return "range sensor " + s.name + ": need 0 <= blind distance < max range";
+  }
   for (const BearingSensor& s : bearing_sensors)
     if (!(s.precision >= 0.0 && s.precision < std::numbers::pi / 2))
       return "bearing sensor " + s.name + ": precision must be in [0, 90) degrees";

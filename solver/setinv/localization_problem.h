@@ -69,7 +69,7 @@ struct LocalizationProblem {
 struct LocalizationHypothesis {
   PavingComponent component;
   ComponentOutliers outliers;          // data indices: ranges first, then bearings
-  std::vector<int> range_walls;        // per range measurement: wall index, -1 none
+  std::vector<int> range_walls;        // per range measurement: wall index, -1 none, kNoWallInRange
   std::vector<int> bearing_landmarks;  // per bearing measurement: landmark, -1 none
   bool contains_truth = false;
 };

@@ -25,16 +25,19 @@ std::vector<RangeMeasurement> simulate_ranges(const LocalizationMap& map, const 
   for (std::size_t i = 0; i < sensors.size(); ++i) {
     const double f = simulated_range(truth, sensors[i], std::span<const Segment>(map.walls));
     const double alpha = sensors[i].precision;
+    const bool limited = sensors[i].has_max_range();
+    const double max_range = limited ? sensors[i].max_range : options.max_range;
     if (listed(options.range_outliers, i)) {
       // Far from the truth's echo: outside the feasible interval by a margin.
-      std::uniform_real_distribution<double> anywhere(0.3, options.max_range);
+      std::uniform_real_distribution<double> anywhere(std::min(0.3, 0.5 * max_range), max_range);
       double d = anywhere(rng);
       while (std::isfinite(f) && std::abs(d - f) < 4.0 * alpha * f + 0.2) d = anywhere(rng);
       out.push_back({i, d});
       continue;
     }
-    if (!(f <= options.max_range)) continue;
-    out.push_back({i, f / (1.0 + options.error_fraction * alpha * unit(rng))});
+    if (!limited && !(f <= max_range)) continue;  // without the option: nothing beyond
+    const double d = std::isfinite(f) ? f / (1.0 + options.error_fraction * alpha * unit(rng)) : kNoEcho;
+    out.push_back({i, !limited || d <= max_range ? d : kNoEcho});  // a reading beyond max_range: no echo
   }
   return out;
 }

@@ -15,7 +15,7 @@ CtcRangeRelaxed::CtcRangeRelaxed(std::vector<Segment> walls, std::vector<RangeSe
       outliers_(outliers),
       x_(measurements_.size()),
       y_(measurements_.size()) {
-  for (const RangeMeasurement& m : measurements_) feasible_.push_back(range_interval(m.range, sensors_[m.sensor].precision));
+  for (const RangeMeasurement& m : measurements_) feasible_.push_back(feasible_range(m, sensors_[m.sensor]));
   events_.reserve(2 * measurements_.size());
 }
 
@@ -28,6 +28,11 @@ CtcRangeRelaxed CtcRangeRelaxed::with_outliers(int q) const {
 void CtcRangeRelaxed::contract(Box& box) const {
   const Interval c = cos(box[2]), s = sin(box[2]);
   for (std::size_t i = 0; i < measurements_.size(); ++i) {
+    if (measurements_[i].no_echo()) {  // no echo point to move back from
+      x_[i] = box[0];
+      y_[i] = box[1];
+      continue;
+    }
     const RangeSensor& sensor = sensors_[measurements_[i].sensor];
     const Interval axis = box[2] + Interval(sensor.heading) + Interval(-sensor.half_aperture, sensor.half_aperture);
     const Interval ux = cos(axis), uy = sin(axis);

@@ -7,6 +7,9 @@
 // of [a_j b_j] - D_i U - R(theta) (x_s, y_s). At least n - q data hold at any pose
 // of S_q, so x and y are narrowed to the q-relaxed intersection of these bounds
 // (relaxed_intersection.h). Seed 004, Remark 5: contractors before bisection.
+// A "no echo" datum has no echo point: it bounds nothing (its bound is the box).
+// A blind zone keeps the reasoning: the distance reported is that of a point of
+// [a_j b_j] ∩ C (range_model.h).
 
 #include <utility>
 #include <vector>

@@ -12,8 +12,7 @@ RangeData::RangeData(std::vector<Segment> walls, std::vector<RangeSensor> sensor
       words_(words_for(walls_.size())),
       status_(measurements_.size(), IBool::maybe()),
       candidates_(measurements_.size() * words_, ~std::uint64_t{0}) {
-  for (const RangeMeasurement& m : measurements_)
-    feasible_.push_back(range_interval(m.range, sensors_[m.sensor].precision));
+  for (const RangeMeasurement& m : measurements_) feasible_.push_back(feasible_range(m, sensors_[m.sensor]));
 }
 
 void RangeData::evaluate(const Box& box, int depth, std::span<IBool> out, int false_budget) {
@@ -26,15 +25,17 @@ void RangeData::evaluate(const Box& box, int depth, std::span<IBool> out, int fa
   for (std::size_t i = 0; i < measurements_.size(); ++i) {
     if (!status[i].is_maybe() || falses > false_budget) continue;
     const Interval& y = feasible_[i];
-    const SensorCone<Interval> cone = sensor_cone(p, c, s, sensors_[measurements_[i].sensor]);
+    const bool unbounded = y.hi() == kInf;  // "no echo": only walls below y.lo decide
+    const RangeSensor& sensor = sensors_[measurements_[i].sensor];
+    const SensorCone<Interval> cone = sensor_cone(p, c, s, sensor);
     std::uint64_t* mine = candidates + i * words_;
     Interval nearest = far_away<Interval>();
     bool below = false;
     for (std::size_t j = 0; j < walls_.size() && !below; ++j) {
       if (!test_bit(mine, j)) continue;
-      const Interval r = remoteness(cone.s, cone.u1, cone.u2, walls_[j]);
-      if (r.lo() > y.hi())
-        clear_bit(mine, j);  // never the echo inside y, on this box and its sub-boxes
+      const Interval r = remoteness(cone.s, cone.u1, cone.u2, walls_[j], sensor.blind_distance);
+      if (r.lo() > y.hi() || (unbounded && r.lo() >= y.lo()))
+        clear_bit(mine, j);  // cannot decide the verdict, on this box and its sub-boxes
       else if (r.hi() < y.lo())
         below = true;  // a nearer wall surely answers: the range is below y
       else
@@ -55,7 +56,7 @@ std::vector<int> RangeData::associate(const Pose<double>& p) const {
   for (std::size_t i = 0; i < measurements_.size(); ++i) {
     int nearest = -1;
     const double r = simulated_range(p, sensors_[measurements_[i].sensor], walls_, &nearest);
-    if (feasible_[i].contains(r)) walls[i] = nearest;
+    if (feasible_[i].contains(r)) walls[i] = measurements_[i].no_echo() ? kNoWallInRange : nearest;
   }
   return walls;
 }

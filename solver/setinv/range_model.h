@@ -9,6 +9,11 @@
 // The nearest point is one of h (projection of s on the line (ab)), h1, h2 (the
 // cone's edges meeting (ab)), a and b; each candidate counts when it lies on the
 // segment and in the cone, which (4.10) states as sign conditions.
+//
+// Options of the sensor (docs/setinversion.md, section 3.1): a blind distance b, below
+// which nothing is heard (seed 000, after (4.6)); and a maximum range, beyond which
+// the sonar reports "no echo" (seed 002, section 3.1), which only changes the
+// measurement's feasible set (feasible_range).
 
 #include <cmath>
 #include <span>
@@ -34,9 +39,12 @@ bool may_hold(const BoolOf<T>& c) {
 }  // namespace detail
 
 /// Seed 000, Table 2 (+ Remark 2). u1 and u2 are the unit edge vectors of the cone,
-/// det(u1, u2) > 0.
+/// det(u1, u2) > 0. With a blind distance b > 0 (0: none) only points at distance
+/// >= b are heard. [ab] ∩ C is convex, so its distances fill [nearest, farthest]:
+/// the wall answers max(nearest, b) when farthest >= b, and nothing when it lies
+/// wholly in the blind zone. The farthest point is an end of the piece: a, b, h1, h2.
 template <class T>
-T remoteness(const Vec2T<T>& s, const Vec2T<T>& u1, const Vec2T<T>& u2, const Segment& w) {
+T remoteness(const Vec2T<T>& s, const Vec2T<T>& u1, const Vec2T<T>& u2, const Segment& w, double blind) {
   using detail::all_nonpositive;
   using detail::may_hold;
   const Vec2T<T> sa = lift<T>(w.ax, w.ay) - s, sb = lift<T>(w.bx, w.by) - s;
@@ -57,8 +65,15 @@ T remoteness(const Vec2T<T>& s, const Vec2T<T>& u1, const Vec2T<T>& u2, const Se
     if (away.is_true()) return far_away<T>();
   }
   T r = far_away<T>();
+  T farthest = T(0.0);  // of the candidates that are ends of [ab] ∩ C; 0 for none
   const auto candidate = [&](const BoolOf<T>& holds, auto distance) {
     if (may_hold<T>(holds)) r = min(r, select(holds, distance(), far_away<T>()));
+  };
+  const auto end_candidate = [&](const BoolOf<T>& holds, auto distance) {
+    if (!may_hold<T>(holds)) return;
+    const T d = distance();
+    r = min(r, select(holds, d, far_away<T>()));
+    if (blind > 0.0) farthest = max(farthest, select(holds, d, T(0.0)));
   };
   // Step 1: h, the orthogonal projection, at distance det(ab, as) / |ab|.
   candidate(all_nonpositive(dot(ab, sa), -dot(ab, sb)) && all_nonpositive(dot(u1, ab), -dot(u2, ab)),
@@ -67,11 +82,13 @@ T remoteness(const Vec2T<T>& s, const Vec2T<T>& u1, const Vec2T<T>& u2, const Se
   const T u1a = det(u1, sa), u1b = det(u1, sb), u2a = det(u2, sa), u2b = det(u2, sb);
   // Steps 2-3: h1 and h2, along u1 and u2 (det, not the scalar product printed in
   // seed 000's Example 1: the distance along u is det(ab, sa) / det(ab, u)).
-  candidate(all_nonpositive(u1a, -u1b), [&] { return abs(det(ab, sa) / d1ab); });
-  candidate(all_nonpositive(u2a, -u2b), [&] { return abs(det(ab, sa) / d2ab); });
+  end_candidate(all_nonpositive(u1a, -u1b), [&] { return abs(det(ab, sa) / d1ab); });
+  end_candidate(all_nonpositive(u2a, -u2b), [&] { return abs(det(ab, sa) / d2ab); });
   // Steps 4-5: the end points, when inside the cone.
-  candidate(all_nonpositive(-u1a, u2a), [&] { return norm(sa); });
-  candidate(all_nonpositive(-u1b, u2b), [&] { return norm(sb); });
+  end_candidate(all_nonpositive(-u1a, u2a), [&] { return norm(sa); });
+  end_candidate(all_nonpositive(-u1b, u2b), [&] { return norm(sb); });
+  // The blind zone: heard from distance b on, when some of the piece lies there.
+  if (blind > 0.0) r = select(leq(T(blind), farthest), max(r, T(blind)), far_away<T>());
   // Step 6 on boxes where the face test is undecided, and Remark 2's test.
   if constexpr (is_interval_v<T>) {
     r = chi(face, far_away<T>(), r);
@@ -104,7 +121,7 @@ T simulated_range(const Pose<T>& p, const RangeSensor& sensor, std::span<const S
   T best = far_away<T>();
   if (nearest) *nearest = -1;
   for (std::size_t j = 0; j < walls.size(); ++j) {
-    const T r = remoteness(cone.s, cone.u1, cone.u2, walls[j]);
+    const T r = remoteness(cone.s, cone.u1, cone.u2, walls[j], sensor.blind_distance);
     if constexpr (!is_interval_v<T>) {
       if (nearest && r < best) *nearest = static_cast<int>(j);
     }
@@ -113,9 +130,19 @@ T simulated_range(const Pose<T>& p, const RangeSensor& sensor, std::span<const S
   return best;
 }
 
-/// Feasible interval of a range measurement: [d (1 - alpha), d (1 + alpha)].
+/// Feasible interval of an echo d: [d (1 - alpha), d (1 + alpha)].
 inline Interval range_interval(double d, double alpha) {
   return Interval(d) * (Interval(1.0) + Interval(-alpha, alpha));
+}
+
+/// Feasible set of f_i(p) for a measurement. "No echo" says the reading would have
+/// exceeded max_range M; a true range r gives readings in [r / (1 + alpha), r / (1 -
+/// alpha)], so r > M (1 - alpha), closed as [M (1 - alpha), +inf]. It holds the
+/// infinite remoteness [DBL_MAX, +inf] (no wall in the cone at all).
+inline Interval feasible_range(const RangeMeasurement& m, const RangeSensor& sensor) {
+  if (!m.no_echo()) return range_interval(m.range, sensor.precision);
+  const Interval beyond = Interval(sensor.max_range) * (Interval(1.0) - Interval(sensor.precision));
+  return Interval(beyond.lo(), kInf);
 }
 
 }  // namespace gesmi

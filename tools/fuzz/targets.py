@@ -50,7 +50,7 @@ def make_seeds(gesmi, repo, folder):
         f.write("time,mine,range,side\n10,?,20,starboard\n12,?,30,port\n")
     _run(gesmi, [a[1:] if a.startswith("$") else a for a in IMPORT_LOGGER[:-1]] + ["logger-mission.h5"], folder)
     _run(gesmi, ["import", "gesmi-txt", "redermor.txt", "--marks", "marks10.csv", "-o", "txt_mission.h5"], folder)
-    for name in ("triangle_two_hypotheses", "warehouse_p02", "warehouse_p04_outliers"):
+    for name in ("triangle_two_hypotheses", "warehouse_p02", "warehouse_p04_outliers", "no_echo_doorway"):
         _scenario_seed(os.path.join(repo, "missions/localization", name + ".yaml"), os.path.join(folder, name + ".yaml"))
     _scenario_seed(os.path.join(repo, "missions/setinv/seed004_example2.yaml"), os.path.join(folder, "seed004_example2.yaml"))
     with open(os.path.join(folder, "small.yaml"), "w") as f:
@@ -123,7 +123,8 @@ READERS = [
             ["simulate", "--seed", "3", "--duration", "60", "--config", "@", "-o", "out.h5"],
             ["kalman", "$mission.h5", "--config", "@", "-o", "out.h5"],
             _import_nav_with("config")], "model.yaml", [["out.h5"]] * 4),
-    Reader("yaml:scenario", "yaml", ["triangle_two_hypotheses.yaml", "warehouse_p02.yaml", "warehouse_p04_outliers.yaml"],
+    Reader("yaml:scenario", "yaml", ["triangle_two_hypotheses.yaml", "warehouse_p02.yaml", "warehouse_p04_outliers.yaml",
+                                     "no_echo_doorway.yaml"],
            [["localize", "@", "-o", "out", "-q"], ["localize", "@", "--simulate", "--seed", "4"]], "scenario.yaml",
            [["out"], []]),
     Reader("yaml:estimation", "yaml", ["seed004_example2.yaml"],

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "io/hdf5/h5_file.h"
@@ -54,6 +55,23 @@ TEST(LocalizeCli, SimulatePrintsMeasurementsAndWritesNothing) {
   EXPECT_EQ(line_count(r.out), 25);
 }
 
+TEST(LocalizeCli, NoEchoIsSimulatedSolvedAndNamed) {
+  const CommandResult sim = run_gesmi({"localize", scenario("no_echo_doorway.yaml"), "--simulate", "--seed", "1"});
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  EXPECT_NE(sim.out.find("{sensor: S2, range: none}"), std::string::npos) << sim.out;
+  EXPECT_EQ(line_count(sim.out), 6);  // a "no echo" is a datum: one per sensor
+  const std::string out = temp_folder("localize") + "/doorway";
+  const CommandResult r = run_gesmi({"localize", scenario("no_echo_doorway.yaml"), "-o", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("#2:S2:beyond"), std::string::npos) << r.out;
+  const io::H5File h5 = io::H5File::open_read(out + "/paving.h5");
+  const std::vector<double> range = h5.read_doubles("/data/range"), max_range = h5.read_doubles("/data/range_max_range");
+  ASSERT_EQ(range.size(), 5u);
+  EXPECT_EQ(range[1], std::numeric_limits<double>::infinity());
+  EXPECT_EQ(max_range[1], 8.0);
+  EXPECT_EQ(h5.read_doubles("/data/range_blind_distance")[0], 0.25);
+}
+
 struct BadRun {
   std::string text;        // scenario content ("" = use `file`)
   std::string file;        // existing scenario
@@ -77,6 +95,13 @@ TEST(LocalizeCli, BadInputIsOneLineExitTwoAndNothingWritten) {
       {"map: [unclosed\n", "", {}, "not valid YAML"},
       {"", "/no/such/scenario.yaml", {}, "cannot open"},
       {"", scenario("triangle_two_hypotheses.yaml"), {"--frobnicate"}, "frobnicate"},
+      // The range model's options (docs/setinversion.md, 3.1).
+      {with("{sensor: T1, range: 1.470557107}", "{sensor: T1, range: none}"), "", {}, "measurements[0].range"},
+      {with("heading_deg: 0, half_aperture_deg: 12, precision: 0.02}", "heading_deg: 0, half_aperture_deg: 12, precision: 0.02, max_range: -4}"),
+       "", {}, "sensors[0].max_range"},
+      {with("heading_deg: 0, half_aperture_deg: 12, precision: 0.02}",
+            "heading_deg: 0, half_aperture_deg: 12, precision: 0.02, max_range: 1, blind_distance: 1}"),
+       "", {}, "sensors[0].blind_distance"},
   };
   int k = 0;
   for (const BadRun& c : cases) {

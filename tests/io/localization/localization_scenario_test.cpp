@@ -102,6 +102,16 @@ TEST(LocalizationScenario, BadInputsNameTheFileTheLineAndTheKey) {
       {"truth: {x: 1, y: 1, theta_deg: 30}", "truth: {x: 1, y: 1}", "truth.theta_deg", ":24:"},
       {"solver:\n  epsilon: 0.05\n", "", "solver", ""},
       {"  - {name: cam, type: bearing,", "  - {name: front, type: bearing,", "sensors[1].name", ":10:"},
+      // The range model's options (docs/setinversion.md, 3.1).
+      {"precision: 0.02}", "precision: 0.02, max_range: -1}", "sensors[0].max_range", ":9:"},
+      {"precision: 0.02}", "precision: 0.02, max_range: 0}", "sensors[0].max_range", ":9:"},
+      {"precision: 0.02}", "precision: 0.02, max_range: far}", "sensors[0].max_range", ":9:"},
+      {"precision: 0.02}", "precision: 0.02, blind_distance: -0.1}", "sensors[0].blind_distance", ":9:"},
+      {"precision: 0.02}", "precision: 0.02, max_range: 3, blind_distance: 3}", "sensors[0].blind_distance", ":9:"},
+      {"precision: 0.02}", "precision: 0.02, max_range: 3, blind_distance: 4}", "sensors[0].blind_distance", ":9:"},
+      {"range: 2.5", "range: none", "measurements[0].range", ":12:"},  // no max_range
+      {"precision: 0.02}", "precision: 0.02, max_range: 2}", "measurements[0].range", ":12:"},  // 2.5 > 2
+      {"range: 2.5", "range: None", "measurements[0].range", ":12:"},
   };
   for (const BadCase& c : cases) {
     std::string text = kValid;
@@ -121,6 +131,27 @@ TEST(LocalizationScenario, BadInputsNameTheFileTheLineAndTheKey) {
       EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     }
   }
+}
+
+TEST(LocalizationScenario, ReadsTheRangeOptionsAndNoEcho) {
+  std::string text = kValid;
+  text.replace(text.find("precision: 0.02}"), 16, "precision: 0.02, max_range: 6, blind_distance: 0.3}");
+  text.replace(text.find("range: 2.5"), 10, "range: none");
+  const LocalizationProblem p = parse(text);
+  EXPECT_DOUBLE_EQ(p.range_sensors[0].max_range, 6.0);
+  EXPECT_DOUBLE_EQ(p.range_sensors[0].blind_distance, 0.3);
+  ASSERT_EQ(p.ranges.size(), 1u);
+  EXPECT_TRUE(p.ranges[0].no_echo());
+  // Without the options: no max range, no blind zone.
+  const LocalizationProblem q = parse(kValid);
+  EXPECT_FALSE(q.range_sensors[0].has_max_range());
+  EXPECT_EQ(q.range_sensors[0].blind_distance, 0.0);
+  // "No echo" is written back as `range: none`.
+  const std::string block = io::localization_measurements_yaml(p);
+  EXPECT_NE(block.find("{sensor: front, range: none}"), std::string::npos) << block;
+  const auto begin = text.find("measurements:"), end = text.find("prior:");
+  text.replace(begin, end - begin, block);
+  EXPECT_TRUE(parse(text).ranges[0].no_echo());
 }
 
 TEST(LocalizationScenario, BrokenYamlIsReportedWithItsLine) {

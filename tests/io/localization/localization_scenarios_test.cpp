@@ -53,7 +53,7 @@ TEST(LocalizationScenarios, StoredMeasurementsAgreeWithTheTruePose) {
     int failing = 0;
     for (const RangeMeasurement& m : p.ranges) {
       const RangeSensor& s = p.range_sensors[m.sensor];
-      failing += !range_interval(m.range, s.precision).contains(simulated_range(*p.truth, s, std::span<const Segment>(p.map.walls)));
+      failing += !feasible_range(m, s).contains(simulated_range(*p.truth, s, std::span<const Segment>(p.map.walls)));
     }
     BearingData bearings(p.map.walls, p.map.landmarks, p.bearing_sensors, p.bearings);
     std::vector<IBool> out(p.bearings.size(), IBool::maybe());

@@ -40,7 +40,7 @@ TEST(RangeModel, RemotenessAgreesWithRayGeometryOnPoints) {
     const double sx = u(rng), sy = u(rng), axis = angle(rng), gamma = 11.3 * kDeg;
     const Vec2T<double> s{sx, sy}, u1{std::cos(axis - gamma), std::sin(axis - gamma)},
         u2{std::cos(axis + gamma), std::sin(axis + gamma)};
-    const double r = remoteness(s, u1, u2, w);
+    const double r = remoteness(s, u1, u2, w, 0.0);
     const double b = brute_remoteness(sx, sy, axis, gamma, w);
     if (std::isinf(b)) {
       EXPECT_TRUE(std::isinf(r)) << trial << " r=" << r;
@@ -61,10 +61,10 @@ TEST(RangeModel, DistanceAlongAUnitVectorUsesTheDeterminant) {
   const double g = 5 * kDeg;
   const Vec2T<double> s{0.5, 1.0}, u1{std::cos(-90 * kDeg - g), std::sin(-90 * kDeg - g)},
       u2{std::cos(-90 * kDeg + g), std::sin(-90 * kDeg + g)};
-  EXPECT_NEAR(remoteness(s, u1, u2, w), 1.0, 1e-12);
+  EXPECT_NEAR(remoteness(s, u1, u2, w, 0.0), 1.0, 1e-12);
   // Behind the face (below the segment), nothing comes back.
   const Vec2T<double> below{0.5, -1.0};
-  EXPECT_TRUE(std::isinf(remoteness(below, Vec2T<double>{-u1.x, -u1.y}, Vec2T<double>{-u2.x, -u2.y}, w)));
+  EXPECT_TRUE(std::isinf(remoteness(below, Vec2T<double>{-u1.x, -u1.y}, Vec2T<double>{-u2.x, -u2.y}, w, 0.0)));
 }
 
 TEST(RangeModel, BoxEvaluationEnclosesEveryPointEvaluation) {
