@@ -80,7 +80,9 @@ nlohmann::json localization_summary_json(const LocalizationProblem& p, const Loc
     const bool range = i < p.ranges.size();
     const std::string sensor = range ? p.range_sensors[p.ranges[i].sensor].name
                                      : p.bearing_sensors[p.bearings[i - p.ranges.size()].sensor].name;
-    data.push_back({{"number", p.file_number(i)}, {"sensor", sensor}, {"kind", range ? "range" : "bearing"}});
+    nlohmann::json datum{{"number", p.file_number(i)}, {"sensor", sensor}, {"kind", range ? "range" : "bearing"}};
+    if (range) datum["no_echo"] = p.ranges[i].no_echo();  // seed 002: nothing heard within max_range
+    data.push_back(std::move(datum));
   }
   nlohmann::json steps = nlohmann::json::array();
   if (r.gomne)

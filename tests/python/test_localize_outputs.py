@@ -72,3 +72,19 @@ def test_estimate_example2_proves_the_sets_of_the_grid(tmp_path):
             proved.setdefault(h["q"], set()).add(tuple(h["outliers"]))
     assert proved == grid_sets()
     assert [level["q"] for level in s["levels"]] == list(range(7))
+
+
+def test_summary_json_marks_the_no_echo_of_the_doorway(tmp_path):
+    # The doorway scenario's second measurement reads `range: none`; the others are echoes.
+    doorway = os.path.join(ROOT, "missions", "localization", "no_echo_doorway.yaml")
+    with open(doorway) as f:
+        lines = [line for line in f if line.startswith("  - {sensor:")]
+    expected = [("range: none" in line) for line in lines]
+    out = str(tmp_path / "d")
+    r = run_gesmi("localize", doorway, "-o", out, "--quiet")
+    assert r.returncode == 0, r.stderr
+    with open(os.path.join(out, "summary.json")) as f:
+        s = json.load(f)
+    assert [d["no_echo"] for d in s["data"]] == expected
+    assert expected.count(True) == 1
+    assert len(s["hypotheses"]) == 1 and s["hypotheses"][0]["holds_truth"]
