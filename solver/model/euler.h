@@ -6,6 +6,7 @@
 // rotations, which is cheaper and no looser than forming the interval matrix.
 
 #include <cmath>
+#include <optional>
 
 #include "solver/interval/box.h"
 
@@ -23,6 +24,16 @@ inline SinCos<double> sin_cos(double angle) { return {std::sin(angle), std::cos(
 /// Lagrange remainder r^2/2 is as tight as the exact range and needs one libm call
 /// each; wider ones use the general interval functions.
 SinCos<Interval> sin_cos(const Interval& angle);
+
+/// What the narrow form of sin_cos starts from: the box's half-width r (rounded up) and
+/// libm's sine and cosine at its rounded midpoint, each widened by kLibmSteps; none for
+/// an empty box or one wider than 0.05 rad. The waterfall's kernel finishes the form in
+/// its own rounding mode from these values (waterfall_kernel.h).
+struct NarrowAngle {
+  double radius;
+  Interval sin_mid, cos_mid;
+};
+std::optional<NarrowAngle> narrow_angle(const Interval& angle);
 
 /// Attitude (roll phi, pitch theta, heading psi) with its sines and cosines.
 template <class T>

@@ -1,43 +1,18 @@
 #include "solver/network/waterfall.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "solver/mission/frame_scale.h"
-#include "solver/network/sonar_plane.h"
 #include "solver/network/sensor_boxes.h"
+#include "solver/network/sonar_ranges.h"
 #include "solver/network/step_chunks.h"
+#include "solver/network/waterfall_kernel.h"
 
 namespace gesmi {
 namespace {
-
-// Range interval for one side, or empty.
-Interval side_ranges(SonarPlane plane, const Vec3I& position, const Vec3I& mine, Interval range, SonarSide side) {
-  plane.side = side;
-  Vec3I q = position, m = mine;
-  if (!plane.contract(q, m, range)) return Interval::empty();
-  return range;
-}
-
-// The ranges at which a mine can appear from a position box, on the sonar's sides, or
-// empty: the interval test where the cheap one could not decide, then the contractor on
-// each side whose prior the rough body offset meets.
-Interval feasible_ranges(const SonarPlane& plane, const Vec3I& p, const Vec3I& m, SonarSide sonar_side,
-                         const Interval& swath) {
-  const Vec3I rough = plane.rough_body_offset(p, m);
-  if (!plane.may_hold(rough, SonarSide::starboard) && !plane.may_hold(rough, SonarSide::port))
-    return Interval::empty();  // out of the sonar plane at this step
-  const Interval distance = plane.possible_ranges(p, m);
-  if (!distance.intersects(swath)) return Interval::empty();
-  const Interval reach = intersect(distance, swath);
-  Interval ranges = Interval::empty();
-  for (const SonarSide side : {SonarSide::starboard, SonarSide::port}) {
-    if (sonar_side != SonarSide::both && sonar_side != side) continue;
-    if (!plane.may_hold(rough, side)) continue;  // out of the plane, or on the other side
-    ranges = hull(ranges, side_ranges(plane, p, m, reach, side));
-  }
-  return ranges;
-}
 
 bool same(const Interval& a, const Interval& b) { return a.lo() == b.lo() && a.hi() == b.hi(); }
 
@@ -87,7 +62,8 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
                                               : frame_margins_over(mission, domains);
   const SensorBoxes boxes(mission, model, margins.view(mission));
   const std::size_t steps = domains.size(), mines = domains.mines.size();
-  const Interval swath(0.0, model.sonar_max_range);
+  const SonarGeometry geometry{model.along_track_tolerance, model.mine_depth_band, model.sonar_max_range,
+                               model.sonar_side};
   // The mines whose box has not changed since `before`, if any.
   std::vector<char> mine_kept(mines, 0);
   if (before && before->waterfall.steps == steps && before->waterfall.mines == mines &&
@@ -97,45 +73,107 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
                      same(domains.mines[i][1], before->domains.mines[i][1]) &&
                      same(domains.mines[i][2], before->domains.mines[i][2]);
   const bool any_kept = std::find(mine_kept.begin(), mine_kept.end(), 1) != mine_kept.end();
+  std::vector<KernelMine> kernel_mines(mines);
+  std::vector<char> mine_in_kernel(mines);
+  for (std::size_t i = 0; i < mines; ++i) {
+    mine_in_kernel[i] = kernel_takes(domains.mines[i]);
+    for (int a = 0; a < 3; ++a) {
+      kernel_mines[i].lo[a] = domains.mines[i][a].lo();
+      kernel_mines[i].hi[a] = domains.mines[i][a].hi();
+    }
+  }
+  // The portable plane at step k, for what the kernel does not take.
+  const auto plane_at = [&](std::size_t k) {
+    SonarPlane plane;
+    plane.attitude = make_attitude(boxes.roll(k), boxes.pitch(k), boxes.heading(k));
+    plane.altitude = boxes.altitude(k);
+    plane.along_tolerance = model.along_track_tolerance;
+    plane.depth_band = model.mine_depth_band;
+    plane.frame_slack = sonar_frame_slack(boxes.frame_scale(k), model.sonar_max_range);
+    return plane;
+  };
   // Steps [first, last) of each chunk into their own part, joined in step order.
   const std::size_t chunks = step_chunk_count(steps);
   std::vector<Waterfall> parts(chunks);
   const auto rows = [&](std::size_t chunk, std::size_t first, std::size_t last) {
     Waterfall& part = parts[chunk];
+    // One block of steps at a time: their near pairs and boxes gathered in the caller's
+    // rounding mode, the kernel over all pairs at once, what it leaves on SonarPlane.
+    constexpr std::size_t kBlock = 512;
+    std::vector<Interval> cells;  // the block's cells by step, then mine (empty: none)
+    std::vector<KernelStep> kernel_steps;
+    std::vector<std::size_t> kernel_step_at;  // each kernel step's offset in the block
+    std::vector<KernelPair> pairs;
+    std::vector<KernelCell> kernel_cells;
+    std::vector<std::pair<std::size_t, std::size_t>> portable;  // (step, mine)
     std::vector<std::size_t> near;
-    // This step's cells by mine (empty: none), appended in mine order.
-    std::vector<Interval> row(mines);
     std::size_t earlier = any_kept ? before->waterfall.first_cell_at(first) : 0;
-    for (std::size_t k = first; k < last; ++k) {
+    for (std::size_t block = first; block < last; block += kBlock) {
       // The first chunk runs on the calling thread: it reports for all (they keep pace).
-      if (chunk == 0 && on_progress && (k - first) % 8192 == 0) on_progress(static_cast<double>(k - first) / static_cast<double>(last - first));
-      const Vec3I p = domains.position(k);
-      const bool kept_step = any_kept && same_positions(domains, before->domains, k);
-      std::fill(row.begin(), row.end(), Interval::empty());
-      near.clear();
-      const double slack = sonar_frame_slack(boxes.frame_scale(k), model.sonar_max_range);
-      // The slack moves each axis of the offset, so the distance by at most sqrt(3) < 2 times it.
-      const double reach = add_up(model.sonar_max_range, 2.0 * slack);
-      for (std::size_t i = 0; i < mines; ++i)
-        if (!(kept_step && mine_kept[i]) && !boxes_beyond(p, domains.mines[i], reach)) near.push_back(i);
-      if (kept_step) {
-        const Waterfall& w = before->waterfall;
-        while (earlier < w.cells() && static_cast<std::size_t>(w.step[earlier]) < k) ++earlier;
-        for (std::size_t c = earlier; c < w.cells() && static_cast<std::size_t>(w.step[c]) == k; ++c)
-          if (mine_kept[static_cast<std::size_t>(w.mine[c])])
-            row[static_cast<std::size_t>(w.mine[c])] = Interval(w.lower[c], w.upper[c]);
+      if (chunk == 0 && on_progress && (block - first) % 8192 == 0)
+        on_progress(static_cast<double>(block - first) / static_cast<double>(last - first));
+      const std::size_t block_end = std::min(last, block + kBlock);
+      cells.assign((block_end - block) * mines, Interval::empty());
+      kernel_steps.clear();
+      kernel_step_at.clear();
+      pairs.clear();
+      portable.clear();
+      for (std::size_t k = block; k < block_end; ++k) {
+        const Vec3I p = domains.position(k);
+        const bool kept_step = any_kept && same_positions(domains, before->domains, k);
+        Interval* row = &cells[(k - block) * mines];
+        near.clear();
+        const double slack = sonar_frame_slack(boxes.frame_scale(k), model.sonar_max_range);
+        // The slack moves each axis of the offset, so the distance by at most sqrt(3) < 2 times it.
+        const double reach = add_up(model.sonar_max_range, 2.0 * slack);
+        for (std::size_t i = 0; i < mines; ++i)
+          if (!(kept_step && mine_kept[i]) && !boxes_beyond(p, domains.mines[i], reach)) near.push_back(i);
+        if (kept_step) {
+          const Waterfall& w = before->waterfall;
+          while (earlier < w.cells() && static_cast<std::size_t>(w.step[earlier]) < k) ++earlier;
+          for (std::size_t c = earlier; c < w.cells() && static_cast<std::size_t>(w.step[c]) == k; ++c)
+            if (mine_kept[static_cast<std::size_t>(w.mine[c])])
+              row[static_cast<std::size_t>(w.mine[c])] = Interval(w.lower[c], w.upper[c]);
+        }
+        if (near.empty()) continue;  // no attitude to build where no mine is in reach
+        KernelStep step;
+        const bool taken = prepare_kernel_step(p, boxes.roll(k), boxes.pitch(k), boxes.heading(k), boxes.altitude(k),
+                                               slack, step);
+        if (taken) {
+          kernel_steps.push_back(step);
+          kernel_step_at.push_back(k - block);
+        }
+        for (const std::size_t i : near) {
+          if (taken && mine_in_kernel[i])
+            pairs.push_back({static_cast<std::uint32_t>(kernel_steps.size() - 1), static_cast<std::uint32_t>(i)});
+          else
+            portable.emplace_back(k, i);
+        }
       }
-      if (!near.empty()) {  // no attitude to build where no mine is in reach
-        SonarPlane plane;
-        plane.attitude = make_attitude(boxes.roll(k), boxes.pitch(k), boxes.heading(k));
-        plane.altitude = boxes.altitude(k);
-        plane.along_tolerance = model.along_track_tolerance;
-        plane.depth_band = model.mine_depth_band;
-        plane.frame_slack = slack;
-        for (const std::size_t i : near) row[i] = feasible_ranges(plane, p, domains.mines[i], model.sonar_side, swath);
+      kernel_cells.resize(pairs.size());
+      kernel_sonar_ranges(geometry, kernel_steps, kernel_mines, pairs, kernel_cells);
+      for (std::size_t j = 0; j < pairs.size(); ++j) {
+        const std::size_t offset = kernel_step_at[pairs[j].step], i = pairs[j].mine;
+        if (kernel_cells[j].verdict == KernelVerdict::ranges)
+          cells[offset * mines + i] = Interval(kernel_cells[j].lo, kernel_cells[j].hi);
+        else if (kernel_cells[j].verdict == KernelVerdict::undecided)
+          portable.emplace_back(block + offset, i);
       }
-      for (std::size_t i = 0; i < mines; ++i)
-        if (!row[i].is_empty()) part.add(k, i, row[i].lo(), row[i].hi());
+      std::size_t planned = steps;  // the step whose portable plane is built
+      SonarPlane plane;
+      for (const auto& [k, i] : portable) {
+        if (k != planned) {
+          plane = plane_at(k);
+          planned = k;
+        }
+        cells[(k - block) * mines + i] =
+            sonar_ranges(plane, domains.position(k), domains.mines[i], model.sonar_side, model.sonar_max_range);
+      }
+      for (std::size_t k = block; k < block_end; ++k)
+        for (std::size_t i = 0; i < mines; ++i) {
+          const Interval& cell = cells[(k - block) * mines + i];
+          if (!cell.is_empty()) part.add(k, i, cell.lo(), cell.hi());
+        }
     }
   };
   for_step_chunks(steps, chunks, rows);

@@ -4,7 +4,8 @@
 // sonar record, i.e. lie in the sonar plane, on the sonar's side, below the robot
 // and within the sonar's range, given the final tube and mine box. Only the feasible
 // cells are kept (a mine is within the sonar's reach on few steps): elsewhere the
-// mine cannot appear.
+// mine cannot appear. Each cell is sonar_ranges() (sonar_ranges.h), computed by the
+// upward-rounding kernel (waterfall_kernel.h) with the same bounds.
 
 #include <cstdint>
 #include <functional>

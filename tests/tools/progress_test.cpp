@@ -36,7 +36,9 @@ TEST(Progress, ALongSolveShowsItsStagesOnATerminalAndClearsTheLine) {
   const auto [code, out] = on_terminal(gesmi + " solve " + dir + "/m.h5 -o " + dir + "/r.h5");
   ASSERT_EQ(code, 0) << out;
   EXPECT_NE(out.find("\r\033[Kgesmi solve: "), std::string::npos) << out;
-  EXPECT_NE(out.find("waterfall"), std::string::npos) << out;
+  // A stage shows when it lasts across a redraw (every 0.1 s): the propagation's sweeps
+  // do at this size; the waterfall (tens of milliseconds) need not.
+  EXPECT_NE(out.find("sweep"), std::string::npos) << out;
   // Cleared before the summary: the last progress text is followed by an erase.
   const std::size_t last = out.rfind("gesmi solve: ");
   ASSERT_NE(last, std::string::npos);
