@@ -58,7 +58,8 @@ nlohmann::json localization_json(const LocalizationProblem& p, const Localizatio
                     {"outer_volume", s.outer_volume()}});
   nlohmann::json out{{"found", r.found},       {"q", r.q},         {"q_lower", r.q_lower},
                      {"truth_enclosed", r.truth_enclosed}, {"hypotheses", hypotheses},
-                     {"outlier_sets", sets},   {"unresolved_boxes", r.outlier_sets.unresolved.size()}};
+                     {"outlier_sets", sets},   {"unresolved_boxes", r.outlier_sets.unresolved.size()},
+                     {"limit_hit", r.limit_hit()}};
   if (!r.safety.empty()) {
     nlohmann::json safety = nlohmann::json::array();
     for (std::size_t i = 0; i < r.safety.size(); ++i) {

@@ -111,7 +111,7 @@ std::string localization_summary(const LocalizationProblem& p, const Localizatio
   const SiviaReport& rep = r.paving.report;
   s += format("paving: %zu inner boxes (volume %.6g), %zu boundary boxes (volume %.6g); %.3f s in all\n",
               r.paving.inner.size(), r.paving.inner.volume(), r.paving.boundary.size(), r.paving.boundary.volume(), r.seconds);
-  if (rep.limit_hit() || (r.gomne && r.gomne->limit_hit))
+  if (r.limit_hit())
     s += "WARNING: a box or time limit was hit: undetermined boxes were kept unbisected\n";
   if (rep.boxes_unsplittable > 0)
     s += format("NOTE: %zu undetermined boxes were too narrow for doubles to bisect (epsilon is below the spacing of "

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <set>
@@ -251,10 +253,24 @@ std::string localization_measurements_yaml(const LocalizationProblem& p) {
   out << "measurements:\n";
   for (const RangeMeasurement& m : p.ranges) {
     out << "  - {sensor: " << p.range_sensors[m.sensor].name << ", range: ";
-    if (m.no_echo())
+    if (m.no_echo()) {
       out << kNoEchoText;
-    else
-      out << m.range;
+    } else {
+      // Ten digits read well; all of them where ten would round above max_range, which
+      // the reader would refuse.
+      std::ostringstream ten;
+      ten.precision(10);
+      ten << m.range;
+      const std::string text = ten.str();
+      double back = 0.0;
+      std::from_chars(text.data(), text.data() + text.size(), back);
+      if (back > p.range_sensors[m.sensor].max_range) {
+        ten.str("");
+        ten.precision(std::numeric_limits<double>::max_digits10);
+        ten << m.range;
+      }
+      out << ten.str();
+    }
     out << "}\n";
   }
   for (const BearingMeasurement& m : p.bearings)

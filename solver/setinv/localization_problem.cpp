@@ -1,5 +1,6 @@
 #include "solver/setinv/localization_problem.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -153,8 +154,12 @@ LocalizationResult localize(const LocalizationProblem& problem,
   refine_options.epsilon = result.epsilon;
   refine_options.scale = sivia_options.scale;
   refine_options.max_boxes = problem.max_boxes;
+  // What is left of the scenario's time (at least a millisecond: the refinement takes no zero limit).
+  refine_options.max_seconds =
+      std::max(1e-3, problem.max_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   OutlierPaving refined = refine_by_outliers(data, result.paving, refine_options, prior);
   result.refinement_boxes = refined.boxes_evaluated;
+  result.refinement_limit_hit = refined.limit_hit();
   ComponentOptions component_options;  // theta wraps, in hypotheses and in the sets' hulls alike
   component_options.periodic_dimension = 2;
   component_options.period = kTwoPi;

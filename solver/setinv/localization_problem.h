@@ -82,6 +82,7 @@ struct LocalizationResult {
   int q_lower = 0;                     // every S_k with k < q_lower was proved empty
   double epsilon = 0.0;                // accuracy of the pavings
   std::size_t refinement_boxes = 0;    // boxes evaluated to refine phi
+  bool refinement_limit_hit = false;   // the refinement stopped at max_boxes or max_seconds
   OutlierPartition outlier_sets;       // S_q split by outlier set, with its ambiguous boxes
   std::vector<DatumSafety> safety;     // per datum (Remark 6), when localization_safety ran
   bool found = false;                  // inner set non-empty (minimal) / set non-empty (fixed)
@@ -89,6 +90,9 @@ struct LocalizationResult {
   std::vector<LocalizationHypothesis> hypotheses;
   bool truth_enclosed = false;         // the true pose lies in inner ∪ boundary
   double seconds = 0.0;
+  /// Some search (SIVIA, GOMNE or the refinement) stopped at max_boxes or max_seconds:
+  /// boxes were kept unbisected (still an enclosure).
+  bool limit_hit() const { return paving.report.limit_hit() || (gomne && gomne->limit_hit) || refinement_limit_hit; }
 };
 
 LocalizationResult localize(const LocalizationProblem& problem,

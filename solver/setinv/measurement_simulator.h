@@ -24,7 +24,10 @@ struct MeasurementSimulationOptions {
 };
 
 /// In sensor order: one range per sensor that gets an echo within range, and a "no
-/// echo" for each other sensor that has a max_range.
+/// echo" for each other sensor that has a max_range. An outlier sensor whose every
+/// reading within range lies near its echo gets a no echo when that is an outlier;
+/// otherwise (as for a bearing whose precision leaves no far value) std::domain_error
+/// names it: the simulation always ends.
 std::vector<RangeMeasurement> simulate_ranges(const LocalizationMap& map, const std::vector<RangeSensor>& sensors,
                                               const Pose<double>& truth, const MeasurementSimulationOptions& options);
 

@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -55,8 +56,12 @@ int simulate(LocalizationProblem problem, const po::variables_map& values) {
     options.bearing_outliers = parse_indices("--bearing-outliers", values["bearing-outliers"].as<std::string>());
   for (std::size_t i : options.range_outliers)
     if (i >= problem.range_sensors.size()) throw UsageError("--range-outliers: no range sensor " + std::to_string(i));
-  problem.ranges = simulate_ranges(problem.map, problem.range_sensors, *problem.truth, options);
-  problem.bearings = simulate_bearings(problem.map, problem.bearing_sensors, *problem.truth, options);
+  try {
+    problem.ranges = simulate_ranges(problem.map, problem.range_sensors, *problem.truth, options);
+    problem.bearings = simulate_bearings(problem.map, problem.bearing_sensors, *problem.truth, options);
+  } catch (const std::domain_error& e) {  // an outlier asked for where none can be drawn
+    throw UsageError(std::string("--simulate: ") + e.what());
+  }
   std::fputs(io::localization_measurements_yaml(problem).c_str(), stdout);
   return kExitOk;
 }

@@ -174,5 +174,22 @@ TEST(LocalizationScenario, MeasurementsBlockRoundTrips) {
   EXPECT_NEAR(q.bearings[0].bearing, p.bearings[0].bearing, 1e-9);
 }
 
+TEST(LocalizationScenario, SimulatedReadingsNearMaxRangeAreWrittenSoTheReaderTakesThem) {
+  // Ten significant digits would round 3.23456789096 up to 3.234567891, above the
+  // sensor's max_range 3.23456789099, which the reader refuses.
+  std::string text = kValid;
+  const std::string plain = "precision: 0.02}";
+  text.replace(text.find(plain), plain.size(), "precision: 0.02, max_range: 3.23456789099}");
+  LocalizationProblem p = parse(text);
+  p.ranges = {{0, 3.23456789096}, {0, 0.5}};
+  const std::string block = io::localization_measurements_yaml(p);
+  EXPECT_NE(block.find("range: 0.5}"), std::string::npos) << block;  // the others keep ten digits
+  const auto begin = text.find("measurements:"), end = text.find("prior:");
+  text.replace(begin, end - begin, block);
+  const LocalizationProblem q = parse(text);  // would throw "beyond the max_range"
+  ASSERT_EQ(q.ranges.size(), 2u);
+  EXPECT_EQ(q.ranges[0].range, 3.23456789096);
+}
+
 }  // namespace
 }  // namespace gesmi
