@@ -121,7 +121,7 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
       for (std::size_t k = block; k < block_end; ++k) {
         const Vec3I p = domains.position(k);
         const bool kept_step = any_kept && same_positions(domains, before->domains, k);
-        Interval* row = &cells[(k - block) * mines];
+        Interval* row = cells.data() + (k - block) * mines;  // no cells without mines
         near.clear();
         const double slack = sonar_frame_slack(boxes.frame_scale(k), model.sonar_max_range);
         // The slack moves each axis of the offset, so the distance by at most sqrt(3) < 2 times it.
