@@ -8,7 +8,7 @@ packages="build-essential cmake pkg-config
  libpixman-1-dev libfontconfig-dev libfreetype-dev
  libgtest-dev libgmock-dev libbenchmark-dev libmpfi-dev libmpfr-dev libgmp-dev
  python3 python3-dev pybind11-dev python3-numpy python3-h5py python3-matplotlib python3-pytest python3-nmea2 nlohmann-json3-dev gdal-bin python3-jsonschema
- help2man parallel"
+ help2man parallel time"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -26,16 +26,23 @@ SIZES = {"ref": 5999.4, "1e6": 100000.0, "1e7": 1000000.0}  # simulated seconds 
 
 
 def run(command, quiet=True):
-    """One process: (CPU s, wall s, peak RSS MB). Exit codes 0 and 3 count as done."""
-    start = time.perf_counter()
-    process = subprocess.Popen(command, stdout=subprocess.DEVNULL if quiet else None, stderr=subprocess.PIPE)
-    _, status, usage = os.wait4(process.pid, 0)
-    wall = time.perf_counter() - start
-    code = os.waitstatus_to_exitcode(status)
-    if code not in (0, 3):
-        sys.exit(f"whole_process: {' '.join(command)} exited {code}: {process.stderr.read().decode().strip()}")
-    process.stderr.close()
-    return usage.ru_utime + usage.ru_stime, wall, usage.ru_maxrss / 1024.0
+    """One process: (CPU s, wall s, peak RSS MB). Exit codes 0 and 3 count as done.
+
+    The peak comes from /usr/bin/time, which forks the command: a process this script
+    starts directly inherits, through exec, the peak of the Python interpreter it was
+    forked from (about 45 MB), which hid every smaller peak."""
+    with tempfile.NamedTemporaryFile("r", prefix="gesmi-peak-") as peak_file:
+        timed = ["/usr/bin/time", "-q", "-f", "%M", "-o", peak_file.name] + command
+        start = time.perf_counter()
+        process = subprocess.Popen(timed, stdout=subprocess.DEVNULL if quiet else None, stderr=subprocess.PIPE)
+        _, status, usage = os.wait4(process.pid, 0)
+        wall = time.perf_counter() - start
+        code = os.waitstatus_to_exitcode(status)
+        if code not in (0, 3):
+            sys.exit(f"whole_process: {' '.join(command)} exited {code}: {process.stderr.read().decode().strip()}")
+        process.stderr.close()
+        peak_kb = float(peak_file.read().split()[-1])
+    return usage.ru_utime + usage.ru_stime, wall, peak_kb / 1024.0
 
 
 def median_of(runs, command, fresh=None):

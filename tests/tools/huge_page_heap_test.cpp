@@ -1,0 +1,89 @@
+// The gesmi command's heap policy (tools/gesmi/huge_page_heap.h): after the call the
+// heap's range is marked for transparent huge pages (the kernel's own account in
+// /proc/self/smaps, flag "hg"), later blocks are carved from that range, and memory
+// allocated, written and freed after it reads back what was written.
+
+#include "tools/gesmi/huge_page_heap.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace gesmi::test {
+namespace {
+
+struct Mapping {
+  std::uintptr_t begin = 0, end = 0;
+  bool huge_pages = false;  // VmFlags has "hg": madvise(MADV_HUGEPAGE) was applied
+};
+
+// The process's mappings as the kernel lists them.
+std::vector<Mapping> mappings() {
+  std::vector<Mapping> all;
+  std::ifstream smaps("/proc/self/smaps");
+  for (std::string line; std::getline(smaps, line);) {
+    if (line.rfind("VmFlags:", 0) == 0) {
+      if (!all.empty()) all.back().huge_pages = line.find(" hg") != std::string::npos;
+      continue;
+    }
+    const std::size_t dash = line.find('-');
+    const std::size_t space = line.find(' ');
+    if (dash == std::string::npos || space == std::string::npos || dash > space) continue;
+    char* stop = nullptr;
+    const auto begin = std::strtoull(line.c_str(), &stop, 16);
+    if (stop != line.c_str() + dash) continue;  // not a mapping's header line
+    all.push_back({begin, std::strtoull(line.c_str() + dash + 1, nullptr, 16), false});
+  }
+  return all;
+}
+
+bool marked(const void* address) {
+  const auto a = reinterpret_cast<std::uintptr_t>(address);
+  for (const Mapping& m : mappings())
+    if (a >= m.begin && a < m.end) return m.huge_pages;
+  return false;
+}
+
+bool sanitized() {
+#if defined(__SANITIZE_ADDRESS__)
+  return true;  // ASan's allocator does not take memory from the program break
+#else
+  return false;
+#endif
+}
+
+TEST(HugePageHeap, MarksTheHeapAndLaterBlocksComeFromIt) {
+  if (sanitized()) GTEST_SKIP() << "ASan replaces malloc";
+  if (!std::filesystem::exists("/sys/kernel/mm/transparent_hugepage/enabled"))
+    GTEST_SKIP() << "this kernel has no transparent huge pages";
+  cli::use_huge_page_heap();
+  // A block of an array's size (a 60,000-step mission's column is 480 kB).
+  std::vector<double> column(60'000, 1.5);
+  EXPECT_TRUE(marked(column.data())) << "the block is not in a range marked for huge pages";
+  EXPECT_TRUE(marked(static_cast<char*>(sbrk(0)) - 1)) << "the heap's end is not marked";
+}
+
+TEST(HugePageHeap, MemoryAfterItHoldsWhatIsWritten) {
+  cli::use_huge_page_heap();
+  // Blocks below, at and beyond the 32 MiB heap limit, written, freed and allocated again.
+  for (int round = 0; round < 2; ++round) {
+    std::vector<std::vector<std::uint64_t>> blocks;
+    for (const std::size_t bytes : {std::size_t{4096}, std::size_t{1} << 20, std::size_t{32} << 20, std::size_t{48} << 20})
+      blocks.emplace_back(bytes / sizeof(std::uint64_t));
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+      for (std::size_t i = 0; i < blocks[b].size(); ++i) blocks[b][i] = (b << 40) ^ i ^ static_cast<std::uint64_t>(round);
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+      for (std::size_t i = 0; i < blocks[b].size(); i += 997)
+        ASSERT_EQ(blocks[b][i], (b << 40) ^ i ^ static_cast<std::uint64_t>(round)) << "block " << b << " word " << i;
+  }
+}
+
+}  // namespace
+}  // namespace gesmi::test
