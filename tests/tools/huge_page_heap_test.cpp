@@ -43,12 +43,20 @@ std::vector<Mapping> mappings() {
   return all;
 }
 
-bool marked(const void* address) {
+const Mapping* mapping_of(const std::vector<Mapping>& all, const void* address) {
   const auto a = reinterpret_cast<std::uintptr_t>(address);
-  for (const Mapping& m : mappings())
-    if (a >= m.begin && a < m.end) return m.huge_pages;
-  return false;
+  for (const Mapping& m : all)
+    if (a >= m.begin && a < m.end) return &m;
+  return nullptr;
 }
+
+bool marked(const void* address) {
+  const std::vector<Mapping> all = mappings();
+  const Mapping* m = mapping_of(all, address);
+  return m != nullptr && m->huge_pages;
+}
+
+bool mapped(const void* address) { return mapping_of(mappings(), address) != nullptr; }
 
 bool sanitized() {
 #if defined(__SANITIZE_ADDRESS__)
@@ -67,6 +75,23 @@ TEST(HugePageHeap, MarksTheHeapAndLaterBlocksComeFromIt) {
   std::vector<double> column(60'000, 1.5);
   EXPECT_TRUE(marked(column.data())) << "the block is not in a range marked for huge pages";
   EXPECT_TRUE(marked(static_cast<char*>(sbrk(0)) - 1)) << "the heap's end is not marked";
+}
+
+// Blocks beyond the heap's 32 MiB get a marked mapping of their own, returned when freed.
+TEST(HugePageHeap, BigBlocksHaveTheirOwnMarkedMapping) {
+  if (sanitized()) GTEST_SKIP() << "ASan replaces operator new";
+  if (!std::filesystem::exists("/sys/kernel/mm/transparent_hugepage/enabled"))
+    GTEST_SKIP() << "this kernel has no transparent huge pages";
+  cli::use_huge_page_heap();
+  const void* address = nullptr;
+  {
+    std::vector<double> big(5'000'000, 2.5);  // 40 MB: a 10^7-step mission's column is 80 MB
+    address = big.data();
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(address) % (std::uintptr_t{2} << 20), 0u) << "not on a huge page";
+    EXPECT_TRUE(marked(address)) << "the big block is not in a range marked for huge pages";
+    EXPECT_EQ(big.back(), 2.5);
+  }
+  EXPECT_FALSE(mapped(address)) << "the big block's mapping outlived the block";
 }
 
 TEST(HugePageHeap, MemoryAfterItHoldsWhatIsWritten) {

@@ -15,22 +15,24 @@
 #include <cstdint>
 #include <cstdlib>
 
+#include "tools/gesmi/huge_page_blocks.h"
+
 extern "C" char end;  // the end of the program's data (the linker's symbol, end(3))
 
 namespace gesmi::cli {
 namespace {
 
 constexpr std::size_t kHeapReserve = std::size_t{256} << 20;
-constexpr std::size_t kLargestHeapBlock = std::size_t{32} << 20;  // glibc's largest mmap threshold
 constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
 constexpr int kDefaultTopPad = 128 << 10;  // mallopt(3)
 
 }  // namespace
 
 void use_huge_page_heap() {
+  use_huge_page_blocks();  // the blocks too large for the heap
   // Blocks up to 32 MiB come from the heap (not a fresh mmap each, which faults again
   // after every free), and the heap is never given back before exit.
-  mallopt(M_MMAP_THRESHOLD, static_cast<int>(kLargestHeapBlock));
+  mallopt(M_MMAP_THRESHOLD, static_cast<int>(kHugePageBlock));
   mallopt(M_ARENA_MAX, 1);  // worker threads allocate from the same heap
   mallopt(M_TRIM_THRESHOLD, static_cast<int>(2 * kHeapReserve));
   // The next growth of the heap reserves kHeapReserve beyond what it needs (address
