@@ -183,7 +183,7 @@ def main():
     result = read(args.result, ["/time", "/tube/lower", "/tube/upper", "/mines/lower", "/mines/upper", "/marks/outlier",
                                 "/gps/outlier", "@status", "@mode", "@inconsistency", "@minimal_outliers", "@sweeps"])
     kalman = read(args.kalman, ["/time", "/kalman/mean", "/kalman/cov", "/kalman/mines/mean", "/kalman/mines/cov",
-                                "@iterations", "@converged", "@biases", "@containment_3sigma_horizontal",
+                                "@iterations", "@converged", "@stalled", "@biases", "@containment_3sigma_horizontal",
                                 "@containment_3sigma_vertical", "@containment_mines", "@containment_mines_plane", "@chi2", "@chi2_dof", "@chi2_per_dof",
                                 "@chi2_band_low", "@chi2_band_high", "@chi2_band_probability", "@chi2_consistent",
                                 "@test_probability",
@@ -372,6 +372,7 @@ def main():
         return None if value is None else (number(value) if kind is float else kind(value))
 
     kal["iterations"], kal["converged"] = attr("iterations", int), attr("converged", bool)
+    kal["stalled"] = attr("stalled", bool)  # None in files written before the stall rule
     kal["biases"] = attr("biases", bool)
     if kalman["@chi2"] is not None:
         kal["chi2"] = {name: attr(name) for name in ["chi2", "chi2_dof", "chi2_per_dof", "chi2_band_low", "chi2_band_high",
@@ -427,7 +428,9 @@ def main():
                                          if itv["minimal_outliers"] else "") + ")" if consistent
                                       else "**" + diagnosis + "**"),
              f"- Kalman smoother: {fmt(kal['iterations'], 0) if kal['iterations'] is not None else '?'} linearisations, "
-             + ("converged" if kal["converged"] else "**not converged**")
+             + ("converged" if kal["converged"] else
+                "stopped at the rounding floor (steps stalled within the stall fraction of σ)" if kal["stalled"]
+                else "**not converged**")
              + "; bias states: " + ("not recorded" if kal["biases"] is None else ("yes" if kal["biases"] else "no")),
              "- Kalman \"inside 3σ\" on the trajectory: per axis, |truth − mean| ≤ 3σ of that axis (99.73 % per axis "
              "for a Gaussian); horizontal = north and east both. Mines: Mahalanobis d² ≤ the chi-square quantile at "

@@ -108,6 +108,9 @@ void write_kalman_result(const KalmanFile& k, const std::string& path) {
     f.set_attribute("/", "tolerance_m", k.options.tolerance);
     f.set_attribute("/", "last_step_m", r.last_step);
     f.set_attribute("/", "converged", static_cast<std::int64_t>(r.converged));
+    f.set_attribute("/", "stall_fraction", k.options.stall_fraction);
+    f.set_attribute("/", "last_step_sigmas", r.last_step_sigmas);
+    f.set_attribute("/", "stalled", static_cast<std::int64_t>(r.stalled));
     f.set_attribute("/", "containment_3sigma_horizontal", k.containment.horizontal);
     f.set_attribute("/", "containment_3sigma_vertical", k.containment.vertical);
     f.set_attribute("/", "containment_mines", k.containment.mines);

@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -53,6 +54,7 @@ std::string KalmanOptions::validate() const {
   if (!(noise_factor > 0.0) || !std::isfinite(noise_factor)) return "the noise factor must be a positive number";
   if (max_iterations < 1 || max_iterations > 100) return "the iteration cap must be between 1 and 100";
   if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) return "the tolerance must be a finite number >= 0";
+  if (!(stall_fraction >= 0.0 && stall_fraction < 1.0)) return "the stall fraction must be a number in [0, 1)";
   return {};
 }
 
@@ -97,6 +99,7 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
   ArrowheadChain chain(n, q);  // one set of buffers for every linearisation
   chain.keep_cross_covariance_at(tested_steps(m, fixes));
   if (o.biases) chain.keep_cross_covariance_columns(3 * k_mines, kBiasCount);
+  double previous_step = std::numeric_limits<double>::infinity();
   for (int it = 0; it < o.max_iterations; ++it) {
     chain.reset();
     ChainBuilder builder(chain, k_mines, o.biases, lin.bias);
@@ -105,18 +108,29 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     chain.solve();
     ++result.iterations;
     // The step: how far the new estimate moved any coordinate from the linearisation
-    // point (for a mine first placed in this pass, from where it was placed).
-    double step = 0.0;
+    // point (for a mine first placed in this pass, from where it was placed), in metres
+    // and in units of that coordinate's smoothed standard deviation.
+    double step = 0.0, step_sigmas = 0.0;
+    const auto measure = [&](const Vec3d& moved, const Vec3d& variance) {
+      for (int c = 0; c < 3; ++c) {
+        const double d = std::fabs(moved[c]);
+        step = std::max(step, d);
+        if (d > 0.0) step_sigmas = std::max(step_sigmas, d / std::sqrt(variance[c]));  // +inf when sigma is 0
+      }
+    };
     for (std::size_t k = 0; k < n; ++k)
-      step = std::max(step, (position(chain, builder, k) - lin.position[k]).cwiseAbs().maxCoeff());
+      measure(position(chain, builder, k) - lin.position[k], position_covariance(chain, builder, k).diagonal());
     for (std::size_t i = 0; i < k_mines; ++i) {
       if (!lin.mine_known[i]) continue;
-      const Vec3d mine = chain.static_mean().segment<3>(static_cast<Eigen::Index>(3 * i));
-      step = std::max(step, (mine - lin.mine[i]).cwiseAbs().maxCoeff());
+      const auto b = static_cast<Eigen::Index>(3 * i);
+      measure(chain.static_mean().segment<3>(b) - lin.mine[i], chain.static_covariance().diagonal().segment<3>(b));
     }
     result.last_step = step;
+    result.last_step_sigmas = step_sigmas;
     result.converged = step <= o.tolerance;
-    const bool last = result.converged || it + 1 == o.max_iterations;
+    result.stalled = !result.converged && it > 0 && step > 0.5 * previous_step && step_sigmas <= o.stall_fraction;
+    previous_step = step;
+    const bool last = result.converged || result.stalled || it + 1 == o.max_iterations;
     if (last) {
       // The checks on the factors just solved (before the linearisation point moves).
       ResidualStatistics statistics(chain, k_mines, o.biases, lin.bias);

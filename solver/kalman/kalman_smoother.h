@@ -37,6 +37,12 @@ struct KalmanOptions {
   /// default: solving the same system twice differs by up to 0.5 mm on a 6 km mission
   /// with two fixes (the chain's rounding), so a step below 0.1 mm may never come.
   double tolerance = 1e-3;
+  /// The rounding floor grows with the mission: about 0.5 mm at 6·10^4 steps, 0.4-1.7 mm
+  /// at 10^6, 2-12 mm at 10^7 (docs/comparison.md, "When the smoother stops"). So the
+  /// linearisations also stop ("stalled") when the step no longer halves although no
+  /// coordinate moved more than this fraction of its own smoothed standard deviation:
+  /// what is left is noise against the estimate's uncertainty. 0: never stop so.
+  double stall_fraction = 0.01;
   bool biases = false;  // the bias-aware variant
   std::string validate() const;
 };
@@ -50,6 +56,8 @@ struct KalmanResult {
   int iterations = 0;      // linearisations done
   double last_step = 0.0;  // m: the largest coordinate change of the last linearisation
   bool converged = false;  // last_step <= tolerance
+  bool stalled = false;    // not converged, but stopped at the rounding floor (stall_fraction)
+  double last_step_sigmas = 0.0;  // the last step in units of each coordinate's standard deviation (the largest)
   bool biases = false;     // the bias-aware variant: the bias fields below are filled
   BiasVec bias_estimate = BiasVec::Zero(), bias_sigma = BiasVec::Zero(), bias_prior_sigma = BiasVec::Zero();
   KalmanConsistency consistency;

@@ -37,13 +37,16 @@ int run_kalman(std::span<const std::string> args) {
        "cap on the linearisations of the range measurements (1 to 100)")
       ("tolerance", po::value<std::string>()->default_value("0.001"),
        "converged when a linearisation moves no position or mine coordinate more (m)")
+      ("stall-fraction", po::value<std::string>()->default_value("0.01"),
+       "also stop when the steps no longer halve though none exceeds this fraction of its coordinate's standard "
+       "deviation: the rounding floor of long missions (0: never)")
       ("biases", po::bool_switch(), "also estimate constant sensor biases (heading; DVL scale and offset per axis; depth scale and offset)");
   add_json_option(options, true);
   add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("mission", 1);
   po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--max-iterations N] [--tolerance T] [--biases] [--json] [--skip-existing]"))
+  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--max-iterations N] [--tolerance T] [--stall-fraction F] [--biases] [--json] [--skip-existing]"))
     return kExitOk;
   KalmanOptions o;
   o.noise_factor = parse_double("--noise-factor", v["noise-factor"].as<std::string>());
@@ -52,6 +55,8 @@ int run_kalman(std::span<const std::string> args) {
   o.max_iterations = static_cast<int>(cap);
   o.tolerance = parse_non_negative("--tolerance", v["tolerance"].as<std::string>());
   if (!std::isfinite(o.tolerance)) throw UsageError("--tolerance: must be finite");
+  o.stall_fraction = parse_non_negative("--stall-fraction", v["stall-fraction"].as<std::string>());
+  if (!(o.stall_fraction < 1.0)) throw UsageError("--stall-fraction: must be below 1");
   o.biases = v["biases"].as<bool>();
   if (const std::string why = o.validate(); !why.empty()) throw UsageError("--noise-factor: " + why);
   const std::string output = v["output"].as<std::string>();
@@ -86,7 +91,14 @@ int run_kalman(std::span<const std::string> args) {
   file.timings_ms["write"] = elapsed_ms(start);
   progress.finish();
   const KalmanResult& k = file.result;
-  if (!k.converged)
+  if (k.stalled)
+    std::fprintf(stderr,
+                 "gesmi kalman: note: stopped after %d linearisations at the smoother's rounding floor: the steps no "
+                 "longer halve (the last %s m, more than the tolerance %s m, but %s of its coordinate's standard "
+                 "deviation); --stall-fraction 0 goes on to the cap\n",
+                 k.iterations, io::format_number(k.last_step).c_str(), io::format_number(o.tolerance).c_str(),
+                 io::format_number(k.last_step_sigmas).c_str());
+  else if (!k.converged)
     std::fprintf(stderr,
                  "gesmi kalman: warning: not converged after %d linearisations (the last moved a coordinate by %s m, more "
                  "than the tolerance %s m): raise --max-iterations, or --tolerance if the steps stall near 0.5 mm (the "
@@ -105,13 +117,16 @@ int run_kalman(std::span<const std::string> args) {
                         {"containment_mines_plane", io::number_json(c.mines_plane)},
                         {"iterations", file.result.iterations},
                         {"last_step_m", io::number_json(file.result.last_step)},
+                        {"last_step_sigmas", io::number_json(file.result.last_step_sigmas)},
                         {"converged", file.result.converged},
+                        {"stalled", file.result.stalled},
                         {"tolerance_m", o.tolerance},
+                        {"stall_fraction", o.stall_fraction},
                         {"biases", o.biases}};
     add_kalman_checks(report["kalman"], file.result);
   } else {
     std::printf("kalman smoother: %zu steps in %.1f ms, %s after %d linearisations (last step %.2g m), written to %s",
-                mission.size(), file.timings_ms["smooth"], k.converged ? "converged" : "NOT converged", k.iterations,
+                mission.size(), file.timings_ms["smooth"], k.converged ? "converged" : k.stalled ? "stopped at the rounding floor" : "NOT converged", k.iterations,
                 k.last_step, output.c_str());
     if (!std::isnan(c.horizontal))
       std::printf("; truth within 3 sigma: horizontal %.1f %%, vertical %.1f %% of steps; inside the 99.73 %% region: "

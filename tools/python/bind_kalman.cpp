@@ -30,6 +30,8 @@ void bind_kalman(py::module_& m) {
       .def_readonly("iterations", &KalmanResult::iterations)
       .def_readonly("last_step", &KalmanResult::last_step)
       .def_readonly("converged", &KalmanResult::converged)
+      .def_readonly("stalled", &KalmanResult::stalled)
+      .def_readonly("last_step_sigmas", &KalmanResult::last_step_sigmas)
       .def_property_readonly(
           "consistency",
           [](const KalmanResult& r) {
@@ -82,7 +84,8 @@ void bind_kalman(py::module_& m) {
           "the estimated sensor biases (empty without biases=True)");
   m.def(
       "kalman",
-      [](Mission& mission, double noise_factor, int max_iterations, double tolerance, bool biases) {
+      [](Mission& mission, double noise_factor, int max_iterations, double tolerance, bool biases,
+         double stall_fraction) {
         io::validate_mission(mission, "mission");
         io::fill_local_gps(mission, "mission");
         KalmanOptions o;
@@ -90,12 +93,14 @@ void bind_kalman(py::module_& m) {
         o.max_iterations = max_iterations;
         o.tolerance = tolerance;
         o.biases = biases;
+        o.stall_fraction = stall_fraction;
         if (const std::string why = o.validate(); !why.empty()) throw io::FormatError("kalman: " + why);
         py::gil_scoped_release release;
         return kalman_smooth(mission, mission.model, gps_fixes(mission), o);
       },
       py::arg("mission"), py::arg("noise_factor") = 1.0, py::arg("max_iterations") = KalmanOptions{}.max_iterations,
       py::arg("tolerance") = KalmanOptions{}.tolerance, py::arg("biases") = false,
+      py::arg("stall_fraction") = KalmanOptions{}.stall_fraction,
       "The Kalman smoother baseline (EKF + RTS, as `gesmi kalman`; biases=True as `--biases`)");
   m.def(
       "three_sigma_containment",

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -135,6 +136,47 @@ TEST(KalmanSmoother, ValidatesItsOptions) {
   o.max_iterations = 20;
   o.tolerance = -1.0;
   EXPECT_FALSE(o.validate().empty());
+  o.tolerance = 1e-3;
+  for (const double bad : {-0.1, 1.0, std::nan("")}) {
+    o.stall_fraction = bad;
+    EXPECT_FALSE(o.validate().empty()) << bad;
+  }
+}
+
+// A tolerance the rounding floor never lets the steps reach (0): the linearisations stop
+// when the step no longer halves while it is within stall_fraction of every coordinate's
+// standard deviation, well before the cap; the estimate is then within a few times that
+// fraction of a standard deviation of where the cap's last linearisation leaves it. With
+// stall_fraction 0 they go on to the cap, not stalled.
+TEST(KalmanSmoother, StopsAtTheRoundingFloorWhenTheStepsStallWithinTheUncertainty) {
+  SimulationOptions so;
+  so.seed = 1;
+  so.errors = SimulatedErrors::worst_case;
+  so.duration = 2400.0;
+  const Mission m = simulate_mission(so);
+  const auto fixes = gps_fixes(m);
+  KalmanOptions unreachable;
+  unreachable.tolerance = 0.0;
+  const KalmanResult stalled = kalman_smooth(m, m.model, fixes, unreachable);
+  EXPECT_TRUE(stalled.stalled);
+  EXPECT_FALSE(stalled.converged);
+  EXPECT_LT(stalled.iterations, unreachable.max_iterations);
+  EXPECT_LE(stalled.last_step_sigmas, unreachable.stall_fraction);
+  EXPECT_GT(stalled.last_step, 0.0);
+
+  KalmanOptions to_the_cap = unreachable;
+  to_the_cap.stall_fraction = 0.0;
+  const KalmanResult capped = kalman_smooth(m, m.model, fixes, to_the_cap);
+  EXPECT_FALSE(capped.stalled);
+  EXPECT_EQ(capped.iterations, to_the_cap.max_iterations);
+  double worst = 0.0;  // in standard deviations of the capped estimate
+  for (std::size_t k = 0; k < capped.steps; ++k)
+    for (std::size_t a = 0; a < 3; ++a)
+      worst = std::max(worst, std::fabs(stalled.mean[3 * k + a] - capped.mean[3 * k + a]) /
+                                  std::sqrt(capped.covariance[9 * k + 4 * a]));
+  EXPECT_LE(worst, 5.0 * unreachable.stall_fraction);
+  std::printf("stalled after %d linearisations (last step %.2g m, %.2g sigma); %.2g sigma from the cap's estimate\n",
+              stalled.iterations, stalled.last_step, stalled.last_step_sigmas, worst);
 }
 
 }  // namespace
