@@ -140,6 +140,19 @@ def test_kalman_checks_and_biases():
     assert all(0.0 < x["sigma"] <= x["prior_sigma"] * (1 + 1e-6) for x in b.bias_estimates)  # (the chain's rounding)
 
 
+def test_kalman_stops_at_the_rounding_floor():
+    # A tolerance of 0 is never met: the passes stop when the steps stall within 1 % of a
+    # standard deviation (stalled), or, with stall_fraction=0, at the cap.
+    m = gesmi.simulate(seed=2, duration=600)
+    k = gesmi.kalman(m, tolerance=0.0)
+    assert k.stalled and not k.converged and k.iterations < 20
+    assert 0.0 < k.last_step_sigmas <= 0.01
+    capped = gesmi.kalman(m, tolerance=0.0, stall_fraction=0.0, max_iterations=6)
+    assert not capped.stalled and not capped.converged and capped.iterations == 6
+    with pytest.raises(gesmi.FormatError):
+        gesmi.kalman(m, stall_fraction=1.0)
+
+
 def test_localize_a_scenario():
     scenario = os.path.join(os.path.dirname(__file__), "..", "..", "missions", "localization", "triangle_two_hypotheses.yaml")
     r = gesmi.localize(scenario)

@@ -36,6 +36,26 @@ TEST(CmdKalman, WritesTheDocumentedDatasetsAndStats) {
   EXPECT_EQ(std::system(command.c_str()), 0);
 }
 
+// A tolerance never met: the command stops at the rounding floor, says so in a note on
+// stderr (not a warning), and records it in the file and the report.
+TEST(CmdKalman, SaysWhenItStoppedAtTheRoundingFloor) {
+  const std::string dir = temp_folder("kalman-stall");
+  ASSERT_EQ(run_gesmi({"simulate", "--seed", "4", "--duration", "600", "-o", dir + "/m.h5"}).exit_code, 0);
+  const CommandResult r = run_gesmi({"kalman", dir + "/m.h5", "-o", dir + "/k.h5", "--tolerance", "0", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("note: stopped after"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("\"stalled\":true"), std::string::npos) << r.out;
+  const io::H5File f = io::H5File::open_read(dir + "/k.h5");
+  EXPECT_EQ(f.int_attribute("/", "stalled"), std::optional<std::int64_t>(1));
+  EXPECT_EQ(f.int_attribute("/", "converged"), std::optional<std::int64_t>(0));
+  const CommandResult capped =
+      run_gesmi({"kalman", dir + "/m.h5", "-o", dir + "/k2.h5", "--tolerance", "0", "--stall-fraction", "0",
+                 "--max-iterations", "4"});
+  ASSERT_EQ(capped.exit_code, 0) << capped.err;
+  EXPECT_NE(capped.err.find("warning: not converged after 4"), std::string::npos) << capped.err;
+}
+
 TEST(CmdKalman, RejectsBadOptionsAndWritesNothing) {
   const std::string dir = temp_folder("kalman-bad");
   ASSERT_EQ(run_gesmi({"simulate", "--seed", "4", "--duration", "300", "-o", dir + "/m.h5"}).exit_code, 0);
@@ -43,6 +63,8 @@ TEST(CmdKalman, RejectsBadOptionsAndWritesNothing) {
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"kalman", dir + "/m.h5", "-o", out, "--noise-factor", "0"},
         std::vector<std::string>{"kalman", dir + "/m.h5", "-o", out, "--noise-factor", "x"},
+        std::vector<std::string>{"kalman", dir + "/m.h5", "-o", out, "--stall-fraction", "1"},
+        std::vector<std::string>{"kalman", dir + "/m.h5", "-o", out, "--stall-fraction", "-0.1"},
         std::vector<std::string>{"kalman", dir + "/missing.h5", "-o", out},
         std::vector<std::string>{"kalman", dir + "/m.h5", "-o", dir + "/no/such/folder/k.h5"}}) {
     const CommandResult r = run_gesmi(args);
