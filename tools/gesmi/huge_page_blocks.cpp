@@ -51,7 +51,9 @@ void* map_big_block(std::size_t bytes) {
   if (const std::uintptr_t tail = raw_start + length + kAlignment - (start + length); tail > 0)
     munmap(reinterpret_cast<void*>(start + length), tail);
   void* block = reinterpret_cast<void*>(start);
-  madvise(block, length, MADV_HUGEPAGE);  // advice: refused, the block is still good memory
+  // Advice only (refused, the block is still good memory), and only on the whole huge
+  // pages the block fills: a partly used last one would count 2 MiB resident.
+  if (const std::size_t whole = bytes / kAlignment * kAlignment; whole > 0) madvise(block, whole, MADV_HUGEPAGE);
   const std::lock_guard<std::mutex> guard(b.lock);
   for (Mapping& m : b.table) {
     if (m.start != nullptr) continue;
