@@ -4,8 +4,9 @@
 
 namespace gesmi::cli {
 
-// Ask the kernel for transparent huge pages on the first 256 MiB of the heap and keep
-// freed memory for reuse (docs/performance.md, "Page faults"). A no-op where the kernel
+// Ask the kernel for transparent huge pages on the first 256 MiB of the heap and on
+// blocks too big for it (huge_page_blocks.h), and keep freed memory for reuse
+// (docs/performance.md, "Huge pages for the command's heap"). A no-op where the kernel
 // refuses; never fails.
 void use_huge_page_heap();
 
