@@ -139,7 +139,19 @@ std::vector<std::int32_t> H5File::read_ints(const std::string& dataset, int rank
   const H5Shape s = checked_shape(dataset, true, rank);  // before allocating
   const H5Handle d = open_dataset(dataset);
   const std::size_t count = s.rows * s.columns;
-  // Read as 64 bits (HDF5 clips larger unsigned values, which the range check then refuses).
+  const H5Handle type(H5Dget_type(d.get()), H5Tclose);
+  if (!type.valid()) fail(dataset, "cannot read its type (damaged file?)");
+  if (H5Tget_sign(type.get()) == H5T_SGN_2 && H5Tget_size(type.get()) <= 4) {
+    // Signed and at most 32 bits (what gesmi writes): every value fits, and a stored
+    // int32 is read as it is, without HDF5's conversion buffer (allocated and cleared
+    // at each read of a converted type).
+    std::vector<std::int32_t> values(count);
+    if (count > 0 && H5Dread(d.get(), H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+      fail(dataset, "cannot read the values (truncated or damaged file)");
+    return values;
+  }
+  // Wider or unsigned: read as 64 bits (HDF5 clips larger unsigned values, which the
+  // range check then refuses).
   std::vector<std::int64_t> wide(count);
   if (count > 0 && H5Dread(d.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, wide.data()) < 0)
     fail(dataset, "cannot read the values (truncated or damaged file)");
