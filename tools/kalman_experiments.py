@@ -199,7 +199,8 @@ def kalman_cells(k, interval_consistent):
         + ("consistent" if chi2["consistent"] else "**inconsistent**"))
     flagged = "not recorded" if c["flagged"] is None else (", ".join(f"{a} {b}" for a, b in c["flagged"]) or "none")
     tube = (f"{pct(h['mean_in_tube'])} / {pct(v['mean_in_tube'])}" if interval_consistent else "no interval answer")
-    passes = f"{c['iterations']}" + ("" if c["converged"] else " (not converged)")
+    passes = f"{c['iterations']}" + ("" if c["converged"] else
+                                      " (stalled at the rounding floor)" if c.get("stalled") else " (not converged)")
     return [passes, f"{num(h['width_6sigma_mean'])}",
             f"{pct(h.get('truth_inside_3sigma'))} / {pct(v.get('truth_inside_3sigma'))}",
             f"{num(h.get('error_max'))} / {num(h.get('error_mean'))}",

@@ -13,6 +13,9 @@
 namespace gesmi {
 namespace {
 
+// A step at least this fraction of the previous one has stopped shrinking.
+constexpr double kStalledRatio = 0.9;
+
 // The weak horizontal prior on the first position (GPS may be absent) and the
 // biases' priors: the factors not from a measurement.
 void add_priors(ArrowheadChain& chain, const ChainFactors& factors, const BiasVec& prior_sigma) {
@@ -111,11 +114,14 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     // point (for a mine first placed in this pass, from where it was placed), in metres
     // and in units of that coordinate's smoothed standard deviation.
     double step = 0.0, step_sigmas = 0.0;
+    const double infinity = std::numeric_limits<double>::infinity();
     const auto measure = [&](const Vec3d& moved, const Vec3d& variance) {
       for (int c = 0; c < 3; ++c) {
-        const double d = std::fabs(moved[c]);
+        // A NaN move or variance counts as infinitely large: it never converges nor stalls.
+        const double d = std::isnan(moved[c]) ? infinity : std::fabs(moved[c]);
+        const double sigmas = d == 0.0 ? 0.0 : d / std::sqrt(variance[c]);  // +inf when sigma is 0
         step = std::max(step, d);
-        if (d > 0.0) step_sigmas = std::max(step_sigmas, d / std::sqrt(variance[c]));  // +inf when sigma is 0
+        step_sigmas = std::max(step_sigmas, std::isnan(sigmas) ? infinity : sigmas);
       }
     };
     for (std::size_t k = 0; k < n; ++k)
@@ -128,7 +134,10 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     result.last_step = step;
     result.last_step_sigmas = step_sigmas;
     result.converged = step <= o.tolerance;
-    result.stalled = !result.converged && it > 0 && step > 0.5 * previous_step && step_sigmas <= o.stall_fraction;
+    // Stalled: the steps stopped shrinking (a converging iteration shrinks them, at about
+    // half per pass at worst on these missions) while they are negligible against the
+    // uncertainty.
+    result.stalled = !result.converged && step >= kStalledRatio * previous_step && step_sigmas <= o.stall_fraction;
     previous_step = step;
     const bool last = result.converged || result.stalled || it + 1 == o.max_iterations;
     if (last) {

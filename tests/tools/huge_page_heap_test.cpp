@@ -8,11 +8,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace gesmi::test {
@@ -92,6 +95,34 @@ TEST(HugePageHeap, BigBlocksHaveTheirOwnMarkedMapping) {
     EXPECT_EQ(big.back(), 2.5);
   }
   EXPECT_FALSE(mapped(address)) << "the big block's mapping outlived the block";
+}
+
+// A size no mapping can hold is refused as the standard says (std::bad_alloc), not
+// rounded into a small mapping; memory from before the call is freed as malloc's.
+TEST(HugePageHeap, RefusesImpossibleSizesAndFreesEarlierMemory) {
+  auto* earlier = new std::vector<double>(5'000'000, 1.0);  // 40 MB from malloc: the policy is not on yet
+  cli::use_huge_page_heap();
+  for (const std::size_t bytes : {SIZE_MAX, SIZE_MAX - (std::size_t{1} << 20), SIZE_MAX / 2})
+    EXPECT_THROW((void)::operator new(bytes), std::bad_alloc) << bytes;
+  EXPECT_EQ(earlier->back(), 1.0);
+  delete earlier;
+}
+
+// Several threads allocating and freeing big and small blocks at once.
+TEST(HugePageHeap, BigBlocksFromSeveralThreads) {
+  cli::use_huge_page_heap();
+  std::vector<std::thread> threads;
+  std::atomic<int> wrong{0};
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&wrong, t] {
+      for (int round = 0; round < 20; ++round) {
+        std::vector<std::uint32_t> big(std::size_t{9} << 20, static_cast<std::uint32_t>(t * 100 + round));  // 36 MiB
+        std::vector<std::uint32_t> small(1000, 7u);
+        if (big[big.size() / 2] != static_cast<std::uint32_t>(t * 100 + round) || small.back() != 7u) ++wrong;
+      }
+    });
+  for (std::thread& t : threads) t.join();
+  EXPECT_EQ(wrong.load(), 0);
 }
 
 TEST(HugePageHeap, MemoryAfterItHoldsWhatIsWritten) {

@@ -31,8 +31,9 @@ std::pair<int, std::string> on_terminal(const std::string& command) {
 TEST(Progress, ALongSolveShowsItsStagesOnATerminalAndClearsTheLine) {
   const std::string dir = temp_folder("progress");
   const std::string gesmi = std::string(GESMI_BIN_DIR) + "/gesmi";
-  // 3 x 10^5 steps: a solve of a second or more, longer than the line's 0.3 s delay.
-  ASSERT_EQ(run_gesmi({"simulate", "--seed", "3", "--duration", "30000", "-o", dir + "/m.h5"}).exit_code, 0);
+  // 10^6 steps: a solve of about a second, longer than the line's 0.3 s delay (3 x 10^5
+  // steps took 0.6 s before the heap was in huge pages, and then less than the delay).
+  ASSERT_EQ(run_gesmi({"simulate", "--seed", "3", "--duration", "100000", "-o", dir + "/m.h5"}).exit_code, 0);
   const auto [code, out] = on_terminal(gesmi + " solve " + dir + "/m.h5 -o " + dir + "/r.h5");
   ASSERT_EQ(code, 0) << out;
   EXPECT_NE(out.find("\r\033[Kgesmi solve: "), std::string::npos) << out;

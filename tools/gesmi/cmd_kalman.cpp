@@ -38,7 +38,7 @@ int run_kalman(std::span<const std::string> args) {
       ("tolerance", po::value<std::string>()->default_value("0.001"),
        "converged when a linearisation moves no position or mine coordinate more (m)")
       ("stall-fraction", po::value<std::string>()->default_value("0.01"),
-       "also stop when the steps no longer halve though none exceeds this fraction of its coordinate's standard "
+       "also stop when the steps stop shrinking though none exceeds this fraction of its coordinate's standard "
        "deviation: the rounding floor of long missions (0: never)")
       ("biases", po::bool_switch(), "also estimate constant sensor biases (heading; DVL scale and offset per axis; depth scale and offset)");
   add_json_option(options, true);
@@ -93,9 +93,9 @@ int run_kalman(std::span<const std::string> args) {
   const KalmanResult& k = file.result;
   if (k.stalled)
     std::fprintf(stderr,
-                 "gesmi kalman: note: stopped after %d linearisations at the smoother's rounding floor: the steps no "
-                 "longer halve (the last %s m, more than the tolerance %s m, but %s of its coordinate's standard "
-                 "deviation); --stall-fraction 0 goes on to the cap\n",
+                 "gesmi kalman: note: stopped after %d linearisations at the smoother's rounding floor: the steps "
+                 "stopped shrinking (the largest %s m, more than the tolerance %s m, but no coordinate moved more "
+                 "than %s of its standard deviation); --stall-fraction 0 goes on to the cap\n",
                  k.iterations, io::format_number(k.last_step).c_str(), io::format_number(o.tolerance).c_str(),
                  io::format_number(k.last_step_sigmas).c_str());
   else if (!k.converged)

@@ -40,6 +40,7 @@ constinit BigBlocks the_big_blocks;  // constant-initialised: usable before main
 BigBlocks& big_blocks() { return the_big_blocks; }
 
 void* map_big_block(std::size_t bytes) {
+  if (bytes > SIZE_MAX - 2 * kAlignment) return nullptr;  // no such mapping; malloc then refuses it too
   BigBlocks& b = big_blocks();
   const std::size_t length = (bytes + kAlignment - 1) / kAlignment * kAlignment;
   // Over-map by one huge page and trim, so that the block starts on a huge page.

@@ -47,7 +47,7 @@ void use_huge_page_heap() {
   const auto after = reinterpret_cast<std::uintptr_t>(sbrk(0));
   std::free(probe);
   mallopt(M_TOP_PAD, kDefaultTopPad);
-  if (probe == nullptr || after <= start + kHugePage) return;  // the heap did not grow here
+  if (probe == nullptr || after <= start + kHugePage) return;  // too little heap to mark (ASan, or brk refused)
   madvise(reinterpret_cast<void*>(start), after - start, MADV_HUGEPAGE);
 }
 

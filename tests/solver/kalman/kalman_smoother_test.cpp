@@ -125,6 +125,24 @@ TEST(KalmanSmoother, ContainmentJudgesMinesByTheirRegionAndStepsPerAxis) {
   EXPECT_TRUE(std::isnan(three_sigma_containment(r, Mission{}).horizontal));
 }
 
+// A Gauss-Newton iteration still converging, slowly (each step about 0.6-0.7 of the one
+// before: drifting errors with the bias states), is not stopped as stalled, although
+// its steps are already far below 1 % of a standard deviation: it reaches the cap,
+// not converged. (A rule that stopped whenever a step failed to halve stopped it.)
+TEST(KalmanSmoother, DoesNotStopAnIterationThatIsStillConvergingSlowly) {
+  SimulationOptions so;
+  so.seed = 1;
+  so.errors = SimulatedErrors::drifting;
+  so.duration = 2400.0;
+  const Mission m = simulate_mission(so);
+  KalmanOptions o;
+  o.biases = true;
+  const KalmanResult r = kalman_smooth(m, m.model, gps_fixes(m), o);
+  EXPECT_FALSE(r.stalled) << "last step " << r.last_step << " m, " << r.last_step_sigmas << " sigma";
+  EXPECT_EQ(r.iterations, o.max_iterations);
+  EXPECT_LE(r.last_step_sigmas, o.stall_fraction);  // the sigma test alone would have stopped it
+}
+
 TEST(KalmanSmoother, ValidatesItsOptions) {
   KalmanOptions o;
   EXPECT_TRUE(o.validate().empty());
@@ -144,7 +162,7 @@ TEST(KalmanSmoother, ValidatesItsOptions) {
 }
 
 // A tolerance the rounding floor never lets the steps reach (0): the linearisations stop
-// when the step no longer halves while it is within stall_fraction of every coordinate's
+// when the step stops shrinking while it is within stall_fraction of every coordinate's
 // standard deviation, well before the cap; the estimate is then within a few times that
 // fraction of a standard deviation of where the cap's last linearisation leaves it. With
 // stall_fraction 0 they go on to the cap, not stalled.
