@@ -126,7 +126,8 @@ int run_kalman(std::span<const std::string> args) {
     add_kalman_checks(report["kalman"], file.result);
   } else {
     std::printf("kalman smoother: %zu steps in %.1f ms, %s after %d linearisations (last step %.2g m), written to %s",
-                mission.size(), file.timings_ms["smooth"], k.converged ? "converged" : k.stalled ? "stopped at the rounding floor" : "NOT converged", k.iterations,
+                mission.size(), file.timings_ms["smooth"],
+                k.converged ? "converged" : k.stalled ? "stopped at the rounding floor" : "NOT converged", k.iterations,
                 k.last_step, output.c_str());
     if (!std::isnan(c.horizontal))
       std::printf("; truth within 3 sigma: horizontal %.1f %%, vertical %.1f %% of steps; inside the 99.73 %% region: "

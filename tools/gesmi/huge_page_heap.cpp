@@ -1,9 +1,10 @@
 // Why: a cold solve touches about 30 MB of fresh memory. In 4 KiB pages that took 5,100
 // page faults, a third of the process's CPU on a virtual machine; with the heap in 2 MiB
-// transparent huge pages, about 1,000 (most of them the program's own pages). Kernels set to "madvise" (Debian's default) give
-// huge pages only to ranges marked MADV_HUGEPAGE, and glibc marks its heap only when
-// told so by an environment variable (glibc.malloc.hugetlb), read before main. So the
-// heap is grown once here, untouched, and marked; later allocations are carved from it.
+// transparent huge pages, about 1,000 (most of them the program's own pages). Kernels
+// set to "madvise" (Debian's default) give huge pages only to ranges marked
+// MADV_HUGEPAGE, and glibc marks its heap only when told so by an environment variable
+// (glibc.malloc.hugetlb), read before main. So the heap is grown once here, untouched,
+// and marked; later allocations are carved from it.
 
 #include "tools/gesmi/huge_page_heap.h"
 

@@ -16,6 +16,15 @@
 namespace gesmi {
 namespace {
 
+// A 2400 s reference-like mission, seed 1, with the given errors.
+Mission simulated_2400s(SimulatedErrors errors) {
+  SimulationOptions so;
+  so.seed = 1;
+  so.errors = errors;
+  so.duration = 2400.0;
+  return simulate_mission(so);
+}
+
 TEST(KalmanSmoother, EstimatesTheTinyMissionAndItsMine) {
   const test::TinyMission t = test::make_tiny_mission(3, test::TinyErrors::uniform);
   const KalmanResult r = kalman_smooth(t.mission, t.mission.model, t.fixes);
@@ -58,11 +67,7 @@ TEST(KalmanSmoother, ReportsItsContainmentOnSimulatedMissions) {
 // a fixed point (one more linearisation moves it by no more than the tolerance plus the
 // chain's rounding floor), and a cap reached is reported as not converged.
 TEST(KalmanSmoother, IteratesUntilTheStepIsBelowTheTolerance) {
-  SimulationOptions so;
-  so.seed = 1;
-  so.errors = SimulatedErrors::worst_case;
-  so.duration = 2400.0;
-  const Mission m = simulate_mission(so);
+  const Mission m = simulated_2400s(SimulatedErrors::worst_case);
   const auto fixes = gps_fixes(m);
   const KalmanResult converged = kalman_smooth(m, m.model, fixes);
   EXPECT_TRUE(converged.converged);
@@ -130,11 +135,7 @@ TEST(KalmanSmoother, ContainmentJudgesMinesByTheirRegionAndStepsPerAxis) {
 // its steps are already far below 1 % of a standard deviation: it reaches the cap,
 // not converged. (A rule that stopped whenever a step failed to halve stopped it.)
 TEST(KalmanSmoother, DoesNotStopAnIterationThatIsStillConvergingSlowly) {
-  SimulationOptions so;
-  so.seed = 1;
-  so.errors = SimulatedErrors::drifting;
-  so.duration = 2400.0;
-  const Mission m = simulate_mission(so);
+  const Mission m = simulated_2400s(SimulatedErrors::drifting);
   KalmanOptions o;
   o.biases = true;
   const KalmanResult r = kalman_smooth(m, m.model, gps_fixes(m), o);
@@ -167,11 +168,7 @@ TEST(KalmanSmoother, ValidatesItsOptions) {
 // fraction of a standard deviation of where the cap's last linearisation leaves it. With
 // stall_fraction 0 they go on to the cap, not stalled.
 TEST(KalmanSmoother, StopsAtTheRoundingFloorWhenTheStepsStallWithinTheUncertainty) {
-  SimulationOptions so;
-  so.seed = 1;
-  so.errors = SimulatedErrors::worst_case;
-  so.duration = 2400.0;
-  const Mission m = simulate_mission(so);
+  const Mission m = simulated_2400s(SimulatedErrors::worst_case);
   const auto fixes = gps_fixes(m);
   KalmanOptions unreachable;
   unreachable.tolerance = 0.0;
