@@ -134,9 +134,8 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     result.last_step = step;
     result.last_step_sigmas = step_sigmas;
     result.converged = step <= o.tolerance;
-    // Stalled: the steps stopped shrinking (a converging iteration shrinks them, at about
-    // half per pass at worst on these missions) while they are negligible against the
-    // uncertainty.
+    // Stalled: the steps stopped shrinking (a converging iteration shrinks them, by a third
+    // per pass at the slowest seen) while they are negligible against the uncertainty.
     result.stalled = !result.converged && step >= kStalledRatio * previous_step && step_sigmas <= o.stall_fraction;
     previous_step = step;
     const bool last = result.converged || result.stalled || it + 1 == o.max_iterations;

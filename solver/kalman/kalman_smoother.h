@@ -40,7 +40,7 @@ struct KalmanOptions {
   /// The rounding floor grows with the mission: about 0.5 mm at 6·10^4 steps, 0.4-1.7 mm
   /// at 10^6, 2-12 mm at 10^7 (docs/comparison.md, "When the smoother stops"). So the
   /// linearisations also stop ("stalled") when the step stops shrinking (at least 0.9 of
-  /// the previous one; converging passes shrink it by half or more) although no
+  /// the previous one; converging passes shrink it by a third or more) although no
   /// coordinate moved more than this fraction of its own smoothed standard deviation:
   /// what is left is noise against the estimate's uncertainty. 0: never stop so.
   double stall_fraction = 0.01;
