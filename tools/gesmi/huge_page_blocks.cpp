@@ -16,6 +16,9 @@
 #include <mutex>
 #include <new>
 
+// Under ASan, whose own operator new stays in charge, none of this is compiled.
+#if !defined(__SANITIZE_ADDRESS__)
+
 namespace gesmi::cli {
 namespace {
 
@@ -85,15 +88,9 @@ bool unmap_big_block(void* p) {
 
 }  // namespace
 
-void use_huge_page_blocks() {
-#if !defined(__SANITIZE_ADDRESS__)
-  big_blocks().enabled.store(true, std::memory_order_release);
-#endif
-}
+void use_huge_page_blocks() { big_blocks().enabled.store(true, std::memory_order_release); }
 
 }  // namespace gesmi::cli
-
-#if !defined(__SANITIZE_ADDRESS__)  // ASan's own operator new stays in charge there
 
 void* operator new(std::size_t bytes) {
   using namespace gesmi::cli;
@@ -113,5 +110,9 @@ void operator delete(void* p) noexcept {
 }
 
 void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
+
+#else
+
+void gesmi::cli::use_huge_page_blocks() {}
 
 #endif
