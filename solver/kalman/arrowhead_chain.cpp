@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <algorithm>
 #include <stdexcept>
 
 namespace gesmi {
@@ -79,8 +80,11 @@ void ArrowheadChain::solve() {
   if (solved_) throw std::logic_error("ArrowheadChain::solve: the factors were solved already; reset() and add them again");
   solved_ = true;
   const auto q = static_cast<Eigen::Index>(q_);
-  std::vector<Step>& steps = steps_;
-  steps.resize(n_);
+  // The steps with a mixed factor, each the start of a segment.
+  std::vector<std::size_t> events;
+  events.reserve(mixed_.size());
+  for (const auto& [k, b] : mixed_) events.push_back(k);
+  coupling_start_.resize((n_ + kCouplingBlock - 1) / kCouplingBlock);
   std::vector<MatX> segment_b;  // B_e of each segment (3 x q)
   MatX d = d_;
   VecX eta_m = eta_m_;
@@ -112,24 +116,21 @@ void ArrowheadChain::solve() {
   if (n_ > 0)
     if (const MatX* b0 = mixed_at(0)) open_segment(*b0, nullptr);
   for (std::size_t k = 0; k < n_; ++k) {
-    Step& st = steps[k];
-    st.segment = -1;  // (kept from an earlier solve otherwise)
+    if (k % kCouplingBlock == 0) coupling_start_[k / kCouplingBlock] = t;
     const Mat3 s_k = a.inverse();
     const Vec3 c_k = s_k * eta;
     diag_[k] = s_k;  // the information block of p_k was read at step k - 1
     eta_[k] = c_k;
     if (!segment_b.empty()) {
-      st.segment = static_cast<int>(segment_b.size()) - 1;
-      st.p = s_k * t;
-      acc.noalias() += t.transpose() * st.p;
+      const Mat3 p_k = s_k * t;  // P_k
+      acc.noalias() += t.transpose() * p_k;
       acc_eta.noalias() += t.transpose() * c_k;
+      if (k + 1 < n_) t = step_info_[k] * p_k;  // T_{k+1} (an event at k + 1 resets it below)
     }
     if (k + 1 == n_) break;
-    const Mat3 w = step_info_[k];  // the (k, k+1) block is -W
-    step_info_[k] = -s_k * w;       // L_k
+    const Mat3& w = step_info_[k];  // the (k, k+1) block is -W
     a = diag_[k + 1] - w * s_k * w;
     eta = eta_[k + 1] + w * c_k;
-    if (!segment_b.empty()) t = w * st.p;
     if (const MatX* b = mixed_at(k + 1)) {
       if (segment_b.empty()) {
         open_segment(*b, nullptr);
@@ -153,43 +154,69 @@ void ArrowheadChain::solve() {
     b_sigma.push_back(b * m_cov_);
     b_sigma_b.push_back(b_sigma.back() * b.transpose());
   }
-  // Backward: p_k = c_k - L_k p_{k+1} - P_k B_e m. Within a segment the cross covariance
-  // X_{k} = Cov(p_k, m) is alpha_k Z + beta_k B_e Sigma_mm, with Z = X at the step after
-  // the segment; only Y_k = X_{k+1} B_e^T (3x3) is needed per step.
+  // The segment of step k: the index of the last event at or before it (-1: none).
+  const auto segment_of = [&](std::size_t k) {
+    return static_cast<int>(std::upper_bound(events.begin(), events.end(), k) - events.begin()) - 1;
+  };
+  // P_k of the steps of a block, recomputed as the forward pass computed them. Their
+  // S_k are still in diag_: the backward pass has not reached the block yet.
+  std::vector<Mat3> coupling(std::min(n_, kCouplingBlock));
+  const auto recompute_coupling = [&](std::size_t first, std::size_t end) {
+    int segment = segment_of(first);
+    auto next_event = static_cast<std::size_t>(segment + 1);  // the first event after `first`
+    Mat3 t_k = coupling_start_[first / kCouplingBlock];
+    for (std::size_t k = first; k < end; ++k) {
+      const bool event = next_event < events.size() && events[next_event] == k;
+      if (event) {
+        ++segment;
+        ++next_event;
+      }
+      if (segment < 0) continue;  // before the first event: no coupling
+      if (k > first) t_k = event ? Mat3::Identity().eval() : (step_info_[k - 1] * coupling[k - 1 - first]).eval();
+      coupling[k - first] = diag_[k] * t_k;
+    }
+  };
+  // Backward: p_k = c_k - L_k p_{k+1} - P_k B_e m, with L_k = -S_k W_k. Within a segment
+  // the cross covariance X_{k} = Cov(p_k, m) is alpha_k Z + beta_k B_e Sigma_mm, with Z = X
+  // at the step after the segment; only Y_k = X_{k+1} B_e^T (3x3) is needed per step.
   MatX z = MatX::Zero(3, q);  // X_{k+1} in full, valid at segment boundaries
   Mat3 alpha = Mat3::Identity(), beta = Mat3::Zero();  // X_{k+1} = alpha Z + beta B_e Sigma
   Mat3 y_end = Mat3::Zero();                           // Z B_e^T for the current segment
   int current = -2;
+  int segment = static_cast<int>(events.size()) - 1;  // the segment of step k below
   for (std::size_t k = n_; k-- > 0;) {
-    const Step& st = steps[k];
-    if (st.segment != current) {
+    if (k + 1 == n_ || (k + 1) % kCouplingBlock == 0) recompute_coupling(k - k % kCouplingBlock, k + 1);
+    while (segment >= 0 && events[static_cast<std::size_t>(segment)] > k) --segment;
+    if (segment != current) {
       // Entering a new segment (going backward): X_{k+1} in full from the previous one.
       if (current >= 0 && k + 1 < n_) z = alpha * z + beta * b_sigma[static_cast<std::size_t>(current)];
       alpha.setIdentity();
       beta.setZero();
-      current = st.segment;
+      current = segment;
       if (current >= 0) y_end = z * segment_b[static_cast<std::size_t>(current)].transpose();
     }
-    // eta_[k + 1] and diag_[k + 1] hold the mean and covariance of p_{k+1} by now.
+    // eta_[k + 1] and diag_[k + 1] hold the mean and covariance of p_{k+1} by now;
+    // diag_[k] still holds S_k.
     Vec3 p = eta_[k];
     Mat3 cov = diag_[k];
-    const Mat3 l = k + 1 < n_ ? step_info_[k] : Mat3::Zero();
+    const Mat3 l = k + 1 < n_ ? (-diag_[k] * step_info_[k]).eval() : Mat3::Zero();
     if (k + 1 < n_) {
       p -= l * eta_[k + 1];
       cov += l * diag_[k + 1] * l.transpose();
     }
     if (current >= 0) {
       const auto e = static_cast<std::size_t>(current);
-      p -= st.p * bm[e];
-      cov += st.p * b_sigma_b[e] * st.p.transpose();
+      const Mat3& p_k = coupling[k % kCouplingBlock];
+      p -= p_k * bm[e];
+      cov += p_k * b_sigma_b[e] * p_k.transpose();
       if (k + 1 < n_) {
         const Mat3 y = alpha * y_end + beta * b_sigma_b[e];  // X_{k+1} B_e^T
-        const Mat3 cross = l * y * st.p.transpose();
+        const Mat3 cross = l * y * p_k.transpose();
         cov += cross + cross.transpose();
       }
       // X_k = -L_k X_{k+1} - P_k B_e Sigma_mm.
       alpha = (-l * alpha).eval();
-      beta = (-l * beta - st.p).eval();
+      beta = (-l * beta - p_k).eval();
     } else if (k + 1 < n_) {
       alpha = (-l * alpha).eval();  // before the first event: X_k = -L_k X_{k+1}
       beta = (-l * beta).eval();

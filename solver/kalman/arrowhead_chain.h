@@ -32,10 +32,7 @@ class ArrowheadChain {
   void reset();
   /// Frees what only solve() needs, once no further solve follows (the means and
   /// covariances stay).
-  void release_workspace() {
-    std::vector<Step>().swap(steps_);
-    std::vector<Mat3>().swap(step_info_);
-  }
+  void release_workspace() { std::vector<Mat3>().swap(step_info_); }
 
   /// Information W and mean term on p_k alone: adds W to the block and W * mean.
   void add_position(std::size_t k, const Mat3& information, const Vec3& mean);
@@ -74,28 +71,27 @@ class ArrowheadChain {
 
  private:
   // Memory (issue: whole-process speed, 10^7 steps): solve() works in place. Its forward
-  // pass overwrites diag_[k] with the conditional covariance S_k, eta_[k] with the
-  // conditional mean c_k and step_info_[k] with -S_k W_k, each once it has been read
-  // for the last time; the backward pass overwrites eta_[k] with the mean and diag_[k]
-  // with the covariance. Only S_k T_k (so that M_k = P_k B_e) and the step's segment
-  // need room of their own.
-  struct Step {
-    Mat3 p;
-    int segment = -1;
-  };
+  // pass overwrites diag_[k] with the conditional covariance S_k and eta_[k] with the
+  // conditional mean c_k, each once it has been read for the last time; the backward
+  // pass overwrites eta_[k] with the mean and diag_[k] with the covariance. The
+  // coupling P_k = S_k T_k of a step to its segment's unknowns is not stored (it was 80
+  // B/step): the backward pass recomputes it block by block, from a T_k kept every
+  // kCouplingBlock steps, with the same operations in the same order as the forward
+  // pass, so that it is bitwise the same.
+  static constexpr std::size_t kCouplingBlock = 256;
 
   std::size_t n_, q_;
   double prior_info_;
   std::vector<Mat3> diag_;        // information block of p_k; then S_k; then the covariance
   std::vector<Vec3> eta_;         // information vector of p_k; then c_k; then the mean
-  std::vector<Mat3> step_info_;   // W_k between p_k and p_k+1; then L_k = -S_k W_k
+  std::vector<Mat3> step_info_;   // W_k between p_k and p_k+1
   std::map<std::size_t, MatX> mixed_;  // B_k (3 x q) at the few steps with a mixed factor
   MatX d_;                        // information of m
   VecX eta_m_;
   // Results.
   VecX m_mean_;
   MatX m_cov_;
-  std::vector<Step> steps_;  // kept between solves
+  std::vector<Mat3> coupling_start_;  // T_k at every kCouplingBlock-th step, kept between solves
   std::map<std::size_t, MatX> cross_at_;  // Cov(p_k, m) at the steps asked for
   std::size_t column_first_ = 0, column_count_ = 0;
   std::vector<double> cross_columns_;     // n x 3 x count, column-major per step

@@ -161,7 +161,10 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
           if (fix.source_index == t.input.row) t.time = fix.time;
       }
       // The result, converted from the chain's terms.
-      chain.release_workspace();  // before the result's arrays: the peak stays that of a solve
+      // Before the result's arrays, so that the peak stays that of a solve: what only the
+      // solve and the linearisation needed.
+      chain.release_workspace();
+      std::vector<Vec3d>().swap(lin.position);
       result.mean.resize(3 * n);
       result.covariance.resize(9 * n);
       for (std::size_t k = 0; k < n; ++k) {

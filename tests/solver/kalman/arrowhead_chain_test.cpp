@@ -10,6 +10,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <Eigen/SparseCholesky>
 #include <random>
 
 namespace gesmi {
@@ -143,6 +144,90 @@ TEST(ArrowheadChain, CrossCovariancesMatchTheDenseInverse) {
     EXPECT_LT((b.chain.cross_covariance_at(k) - cov.block(b.p(k), b.m(), 3, static_cast<Eigen::Index>(q))).norm(), 1e-8)
         << k;
   EXPECT_THROW(b.chain.cross_covariance_at(1), std::out_of_range);
+}
+
+// A chain long enough that the solver recomputes its per-step couplings block by block
+// (arrowhead_chain.h): segments starting at a block's last and first steps, one that
+// spans block boundaries, and one still open at the end; against a sparse Cholesky
+// solve of the same system, at every step for the means and at the steps around the
+// boundaries for the covariances and cross covariances.
+TEST(ArrowheadChain, MatchesASparseSolveAcrossRecomputedBlocks) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const std::size_t n = 1100, q = 5;
+  const auto dim = static_cast<Eigen::Index>(3 * n + q);
+  ArrowheadChain chain(n, q, 1e-12);
+  std::vector<Eigen::Triplet<double>> entries;
+  VecX eta = VecX::Zero(dim);
+  const auto p = [](std::size_t k) { return static_cast<Eigen::Index>(3 * k); };
+  const auto m = static_cast<Eigen::Index>(3 * n);
+  const auto add_block = [&](Eigen::Index r, Eigen::Index c, const MatX& block) {
+    for (Eigen::Index i = 0; i < block.rows(); ++i)
+      for (Eigen::Index j = 0; j < block.cols(); ++j) entries.emplace_back(r + i, c + j, block(i, j));
+  };
+  add_block(m, m, 1e-12 * MatX::Identity(q, q));
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    const Mat3 w = random_spd(rng, 50.0);
+    const Vec3 delta(u(rng), u(rng), u(rng));
+    chain.add_step(k, w, delta);
+    add_block(p(k), p(k), w);
+    add_block(p(k + 1), p(k + 1), w);
+    add_block(p(k), p(k + 1), -w);
+    add_block(p(k + 1), p(k), -w);
+    eta.segment<3>(p(k)) -= w * delta;
+    eta.segment<3>(p(k + 1)) += w * delta;
+  }
+  for (std::size_t k = 0; k < n; k += 7) {
+    const Mat3 w = random_spd(rng, 0.5);
+    const Vec3 mean(u(rng), u(rng), 10 * u(rng));
+    chain.add_position(k, w, mean);
+    add_block(p(k), p(k), w);
+    eta.segment<3>(p(k)) += w * mean;
+  }
+  const std::vector<std::size_t> events = {5, 255, 256, 300, 770, 1040};
+  for (const std::size_t k : events) {
+    for (int r = 0; r < 3; ++r) {
+      const Eigen::RowVector3d hp(u(rng), u(rng), u(rng));
+      Eigen::RowVectorXd hm(q);
+      for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(q); ++i) hm(i) = u(rng);
+      const double z = u(rng), w = 3.0 + u(rng);
+      chain.add_mixed(k, hp, hm, z, w);
+      Eigen::RowVectorXd h = Eigen::RowVectorXd::Zero(3 + static_cast<Eigen::Index>(q));
+      h.head<3>() = hp;
+      h.tail(static_cast<Eigen::Index>(q)) = hm;
+      const MatX hh = w * h.transpose() * h;
+      add_block(p(k), p(k), hh.topLeftCorner<3, 3>());
+      add_block(p(k), m, hh.topRightCorner(3, static_cast<Eigen::Index>(q)));
+      add_block(m, p(k), hh.bottomLeftCorner(static_cast<Eigen::Index>(q), 3));
+      add_block(m, m, hh.bottomRightCorner(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)));
+      eta.segment<3>(p(k)) += w * z * hp.transpose();
+      eta.tail(static_cast<Eigen::Index>(q)) += w * z * hm.transpose();
+    }
+  }
+  std::vector<std::size_t> checked;
+  for (const std::size_t centre : {std::size_t{0}, std::size_t{256}, std::size_t{512}, std::size_t{768},
+                                   std::size_t{1024}, std::size_t{1096}})
+    for (std::size_t k = centre >= 4 ? centre - 4 : 0; k < std::min(centre + 4, n); ++k) checked.push_back(k);
+  chain.keep_cross_covariance_at(checked);
+  chain.keep_cross_covariance_columns(1, 3);
+  chain.solve();
+
+  Eigen::SparseMatrix<double> lambda(dim, dim);
+  lambda.setFromTriplets(entries.begin(), entries.end());  // duplicates are summed
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> sparse(lambda);
+  ASSERT_EQ(sparse.info(), Eigen::Success);
+  const VecX x = sparse.solve(eta);
+  for (std::size_t k = 0; k < n; ++k) EXPECT_LT((chain.mean(k) - x.segment<3>(p(k))).norm(), 1e-8) << k;
+  EXPECT_LT((chain.static_mean() - x.tail(static_cast<Eigen::Index>(q))).norm(), 1e-8);
+  const MatX static_columns = sparse.solve(MatX(MatX::Identity(dim, dim).rightCols(static_cast<Eigen::Index>(q))));
+  EXPECT_LT((chain.static_covariance() - static_columns.bottomRows(static_cast<Eigen::Index>(q))).norm(), 1e-8);
+  for (const std::size_t k : checked) {
+    const MatX columns = sparse.solve(MatX(MatX::Identity(dim, dim).middleCols(p(k), 3)));
+    EXPECT_LT((chain.covariance(k) - columns.middleRows(p(k), 3)).norm(), 1e-8) << k;
+    const MatX cross = static_columns.middleRows(p(k), 3);
+    EXPECT_LT((chain.cross_covariance_at(k) - cross).norm(), 1e-8) << k;
+    EXPECT_LT((MatX(chain.cross_covariance_columns(k)) - cross.middleCols(1, 3)).norm(), 1e-8) << k;
+  }
 }
 
 // Textbook Kalman filter and RTS smoother for x(k+1) = x(k) + u(k) + w, y(k) = x(k) + v.
