@@ -74,10 +74,10 @@ class ArrowheadChain {
   // pass overwrites diag_[k] with the conditional covariance S_k and eta_[k] with the
   // conditional mean c_k, each once it has been read for the last time; the backward
   // pass overwrites eta_[k] with the mean and diag_[k] with the covariance. The
-  // coupling P_k = S_k T_k of a step to its segment's unknowns is not stored (it was 80
-  // B/step): the backward pass recomputes it block by block, from a T_k kept every
-  // kCouplingBlock steps, with the same operations in the same order as the forward
-  // pass, so that it is bitwise the same.
+  // coupling P_k = S_k T_k of a step to its segment's unknowns and the gain L_k = -S_k W_k
+  // are not stored (P_k took 80 B/step): the backward pass recomputes them, P_k block by
+  // block from a T_k kept every kCouplingBlock steps, with the same operations in the
+  // same order as the forward pass, so that the results are bitwise the same.
   static constexpr std::size_t kCouplingBlock = 256;
 
   std::size_t n_, q_;
