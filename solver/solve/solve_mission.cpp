@@ -119,6 +119,11 @@ void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOption
     net = build_network(mission, mission.model, in.fixes, frame);
     narrow_to_frame(s.domains, priors, frame);
     intersect_network_priors(s.domains, net);
+    // Neither the priors nor the margins are kept in memory during the second
+    // propagation (a diagnosis builds its own).
+    priors = {};
+    margins = {};
+    frame = zone_frame(mission);
     s.timings_ms["build"] += elapsed_ms(start);
     start = Clock::now();
     take_propagation(s.report, solve(net, s.domains, options.propagation));
@@ -127,7 +132,8 @@ void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOption
   }
   if (s.report.consistent || !options.diagnose) return;
   start = Clock::now();
-  if (priors.dz.empty()) priors = frameless_sensor_priors(mission, mission.model);  // moved into the first pass
+  // (the first pass took their vertical part, and the second released them)
+  if (priors.dx.empty() || priors.dz.empty()) priors = frameless_sensor_priors(mission, mission.model);
   // The diagnosis asks which single mark or fix is wrong: margins from the fixes, or
   // over a tube that trusted every datum, would presume the answer, so it takes the
   // zone's (sound whichever datum is wrong).
@@ -239,7 +245,6 @@ std::string SolveOptions::validate() const {
 
 MissionSolution solve_mission(const Mission& mission, const SolveOptions& options) {
   MissionSolution s;
-  s.time = mission.time;
   s.mark_time = mission.mark_time;
   s.mark_range = mission.mark_range;
   s.mark_mine = mission.mark_mine;
@@ -278,6 +283,7 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
                                     [&](double fraction) { stage("waterfall", fraction); });
     s.timings_ms["waterfall"] = elapsed_ms(start);
   }
+  s.time = mission.time;  // copied last: not held during the propagation, the solve's peak
   return s;
 }
 
