@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <span>
 
-#include "io/digest/sha256.h"
+#include "io/digest/digest.h"
 
 namespace gesmi::io {
 
-std::string navigation_digest(const Mission& m) {
-  Sha256 h;
+std::string navigation_digest(const Mission& m, DigestKind kind) {
+  Digest h(kind);
   for (const auto* v : {&m.time, &m.roll, &m.pitch, &m.heading, &m.vx, &m.vy, &m.vz, &m.altitude, &m.depth, &m.gps_time,
                         &m.gps_longitude, &m.gps_latitude, &m.gps_given_north_halfwidth, &m.gps_given_east_halfwidth})
     h.add(*v);
@@ -19,8 +19,8 @@ std::string navigation_digest(const Mission& m) {
   return h.hex();
 }
 
-std::string bounds_digest(const SensorModel& model) {
-  Sha256 h;
+std::string bounds_digest(const SensorModel& model, DigestKind kind) {
+  Digest h(kind);
   for (const SensorModelField& f : sensor_model_fields()) {
     h.add(f.key);
     h.add(model.*f.member);
@@ -32,8 +32,8 @@ std::string bounds_digest(const SensorModel& model) {
   return h.hex();
 }
 
-std::string marks_digest(const Mission& m, std::size_t marks) {
-  Sha256 h;
+std::string marks_digest(const Mission& m, std::size_t marks, DigestKind kind) {
+  Digest h(kind);
   marks = std::min(marks, m.mark_count());
   h.add(std::span<const double>(m.mark_time.data(), marks));
   h.add(std::span<const std::int32_t>(m.mark_mine.data(), marks));

@@ -5,7 +5,7 @@
 #include <map>
 #include <optional>
 
-#include "io/digest/sha256.h"
+#include "io/digest/digest.h"
 #include "io/io_version.h"
 #include "io/output/output_set.h"
 #include "io/time/utc_time.h"

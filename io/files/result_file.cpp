@@ -23,8 +23,9 @@ constexpr const char* kFormat = "gesmi-result";
 // 1: before digests (no format_version attribute); 2: per-dataset and root SHA-256;
 // 3: the waterfall stored as its feasible cells only; 4: the model keys of mission
 // format 3 (max_depth_rate, max_altitude_rate) and the mission's epoch_utc; 5: the
-// mission's origin (origin_latitude, origin_longitude, datum), for geodetic exports.
-constexpr H5FormatVersions kVersions{.current = 5, .oldest = 1, .when_absent = 1};
+// mission's origin (origin_latitude, origin_longitude, datum), for geodetic exports;
+// 6: XXH3-128 digests (attributes `xxh128`, `navigation_xxh128`, ...) instead of SHA-256.
+constexpr H5FormatVersions kVersions{.current = kResultFormat, .oldest = 1, .when_absent = 1};
 
 // Every dataset of a result, in the order the root digest lists them (format 3;
 // format 2 has no /waterfall/step and /waterfall/mine, its waterfall being dense).
@@ -61,6 +62,7 @@ bool format_3_only(std::string_view name) { return name == "/waterfall/step" || 
 // as today's, whatever format it was read from).
 std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& r, std::int64_t format_version) {
   const MissionSolution& s = r.solution;
+  const std::string kind = digest_name(result_digest_kind(format_version));
   std::vector<std::pair<std::string, std::string>> fields = {
           {"status", s.report.consistent ? "consistent" : "inconsistent"},
           {"mode", solve_mode_name(s.report.mode)},
@@ -69,9 +71,9 @@ std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& 
           {"converged", std::to_string(int{s.report.converged})},
           {"minimal_outliers", std::to_string(s.report.minimal_outliers)},
           {"mine_count", std::to_string(s.mine_count)},
-          {"navigation_sha256", r.navigation_digest},
-          {"bounds_sha256", r.bounds_digest},
-          {"marks_sha256", r.marks_digest},
+          {"navigation_" + kind, r.navigation_digest},
+          {"bounds_" + kind, r.bounds_digest},
+          {"marks_" + kind, r.marks_digest},
           {"mark_count", std::to_string(s.mark_count())},
           {"gesmi_version", r.version}};
   if (r.epoch) fields.emplace_back("epoch_utc", format_iso8601(*r.epoch));
@@ -97,7 +99,8 @@ SolveMode mode_named(const std::string& name) {
 
 // Interval arrays as N x 3 lower / upper datasets (empty bounds as NaN), one buffer
 // at a time (the largest memory of a solve is that of its result's writing).
-void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interval>* axes[3], std::size_t n) {
+void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interval>* axes[3], std::size_t n,
+                  DigestKind kind) {
   std::vector<double> rows(3 * n);
   for (const bool upper : {false, true}) {
     for (std::size_t k = 0; k < n; ++k)
@@ -105,7 +108,7 @@ void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interv
         const Interval& x = (*axes[c])[k];
         rows[3 * k + c] = x.is_empty() ? NAN : (upper ? x.hi() : x.lo());
       }
-    write_digested(f, prefix + (upper ? "/upper" : "/lower"), rows, n, 3, 2);
+    write_digested(f, prefix + (upper ? "/upper" : "/lower"), rows, n, 3, 2, kind);
   }
 }
 
@@ -116,13 +119,13 @@ void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interv
 // Reads N x 3 bounds; an interval is [lo, hi] with lo <= hi, lo < +inf, hi > -inf,
 // or empty (both NaN).
 void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interval>* axes[3], std::size_t n,
-                 bool verified) {
+                 std::optional<DigestKind> verified) {
   std::vector<double> lower(3 * n), upper(3 * n);
   f.read_doubles_into(prefix + "/lower", lower);
   f.read_doubles_into(prefix + "/upper", upper);
   if (verified) {
-    verify_digest(f, prefix + "/lower", lower, n, 3);
-    verify_digest(f, prefix + "/upper", upper, n, 3);
+    verify_digest(f, prefix + "/lower", lower, n, 3, *verified);
+    verify_digest(f, prefix + "/upper", upper, n, 3, *verified);
   }
   for (std::size_t c = 0; c < 3; ++c) axes[c]->resize(n);
   for (std::size_t k = 0; k < n; ++k)
@@ -144,30 +147,30 @@ void expect_flags(const H5File& f, const std::string& dataset, const std::vector
 // The feasible cells of the waterfall in (step, mine) order: most of a dense waterfall
 // is NaN (97.5 % at 10^7 steps), a mine being within the sonar's reach on few steps.
 void write_waterfall_cells(H5File& f, const Waterfall& w, std::size_t steps_in_tube, std::size_t mine_count,
-                           const std::string& path) {
+                           const std::string& path, DigestKind kind) {
   // Cells not written would read back as "no mine can appear there".
   if (w.steps != steps_in_tube || w.mines != mine_count)
     throw FormatError(path + ": the solution has no waterfall to write (solve with the waterfall computed)");
-  write_digested(f, "/waterfall/step", w.step, w.cells());
-  write_digested(f, "/waterfall/mine", w.mine, w.cells());
-  write_digested(f, "/waterfall/lower", w.lower, w.cells());
-  write_digested(f, "/waterfall/upper", w.upper, w.cells());
+  write_digested(f, "/waterfall/step", w.step, w.cells(), 1, 1, kind);
+  write_digested(f, "/waterfall/mine", w.mine, w.cells(), 1, 1, kind);
+  write_digested(f, "/waterfall/lower", w.lower, w.cells(), 1, 1, kind);
+  write_digested(f, "/waterfall/upper", w.upper, w.cells(), 1, 1, kind);
 }
 
 // The waterfall of n steps and k mines from its cells (format 3), checked: equal
 // lengths, steps and mines in range, cells in strictly increasing order, finite bounds
 // in order.
-void read_waterfall_cells(const H5File& f, std::size_t n, std::size_t k, Waterfall& w) {
+void read_waterfall_cells(const H5File& f, std::size_t n, std::size_t k, Waterfall& w, DigestKind kind) {
   std::vector<std::int32_t> steps = f.read_ints("/waterfall/step", 1), mines = f.read_ints("/waterfall/mine", 1);
   std::vector<double> lower = f.read_doubles("/waterfall/lower", 1), upper = f.read_doubles("/waterfall/upper", 1);
   const std::size_t cells = steps.size();
   for (const auto& [name, size] : {std::pair{"/waterfall/mine", mines.size()}, std::pair{"/waterfall/lower", lower.size()},
                                    std::pair{"/waterfall/upper", upper.size()}})
     if (size != cells) bad(f, name, std::to_string(size) + " rows where /waterfall/step has " + std::to_string(cells));
-  verify_digest(f, "/waterfall/step", steps, cells, 1);
-  verify_digest(f, "/waterfall/mine", mines, cells, 1);
-  verify_digest(f, "/waterfall/lower", lower, cells, 1);
-  verify_digest(f, "/waterfall/upper", upper, cells, 1);
+  verify_digest(f, "/waterfall/step", steps, cells, 1, kind);
+  verify_digest(f, "/waterfall/mine", mines, cells, 1, kind);
+  verify_digest(f, "/waterfall/lower", lower, cells, 1, kind);
+  verify_digest(f, "/waterfall/upper", upper, cells, 1, kind);
   std::size_t previous = 0;
   for (std::size_t c = 0; c < cells; ++c) {
     const std::string row = "row " + std::to_string(c);
@@ -192,9 +195,10 @@ void read_waterfall_cells(const H5File& f, std::size_t n, std::size_t k, Waterfa
 }  // namespace
 
 void record_inputs(SolveResult& r, const Mission& mission, std::string navigation) {
-  r.navigation_digest = navigation.empty() ? navigation_digest(mission) : std::move(navigation);
-  r.bounds_digest = bounds_digest(mission.model);
-  r.marks_digest = marks_digest(mission, r.solution.mark_count());
+  const DigestKind kind = result_digest_kind(r.format_version);
+  r.navigation_digest = navigation.empty() ? navigation_digest(mission, kind) : std::move(navigation);
+  r.bounds_digest = bounds_digest(mission.model, kind);
+  r.marks_digest = marks_digest(mission, r.solution.mark_count(), kind);
   r.version = std::string(version());
   r.epoch = mission.epoch;
   r.origin = mission.origin;
@@ -202,17 +206,21 @@ void record_inputs(SolveResult& r, const Mission& mission, std::string navigatio
 
 void write_result(const SolveResult& r, const std::string& path) {
   if (!r.origin) throw FormatError(path + ": the result has no origin to record (record_inputs() gives it)");
+  if (r.format_version != kResultFormat && r.format_version != 5)
+    throw FormatError(path + ": results are written in format " + std::to_string(kResultFormat) + " (or 5), not " +
+                      std::to_string(r.format_version));
+  const DigestKind kind = result_digest_kind(r.format_version);
   const MissionSolution& s = r.solution;
   AtomicOutput out(path);
   {
     H5File f = H5File::create(out.temp_path(), out.final_path());
     const TubeDomains& d = s.domains;
     const std::size_t n = d.size();
-    write_digested(f, "/time", s.time, s.time.size());
+    write_digested(f, "/time", s.time, s.time.size(), 1, 1, kind);
     const std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
-    write_bounds(f, "/tube", tube, n);
+    write_bounds(f, "/tube", tube, n, kind);
     const std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
-    write_bounds(f, "/increments", increments, d.dx.size());
+    write_bounds(f, "/increments", increments, d.dx.size(), kind);
     std::vector<Interval> mx, my, mz;
     for (const Vec3I& m : d.mines) {
       mx.push_back(m[0]);
@@ -220,22 +228,23 @@ void write_result(const SolveResult& r, const std::string& path) {
       mz.push_back(m[2]);
     }
     const std::vector<Interval>* mines[3] = {&mx, &my, &mz};
-    write_bounds(f, "/mines", mines, d.mines.size());
+    write_bounds(f, "/mines", mines, d.mines.size(), kind);
     const std::size_t k = static_cast<std::size_t>(s.mine_count);
-    write_waterfall_cells(f, s.waterfall, n, k, path);
+    write_waterfall_cells(f, s.waterfall, n, k, path, kind);
     std::vector<std::int32_t> candidates(s.candidates.size() * k);
     for (std::size_t j = 0; j < s.candidates.size(); ++j)
       for (std::size_t i = 0; i < k; ++i) candidates[j * k + i] = static_cast<std::int32_t>(s.candidates[j] >> i & 1);
-    write_digested(f, "/marks/candidates", candidates, s.candidates.size(), k, 2);
-    write_digested(f, "/marks/outlier", s.mark_outlier, s.mark_outlier.size());
-    write_digested(f, "/marks/time", s.mark_time, s.mark_time.size());
-    write_digested(f, "/marks/range", s.mark_range, s.mark_range.size());
-    write_digested(f, "/marks/mine", s.mark_mine, s.mark_mine.size());
-    write_digested(f, "/marks/side", s.mark_side, s.mark_side.size());
-    write_digested(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size());
-    write_format(f, kFormat, kVersions);
+    write_digested(f, "/marks/candidates", candidates, s.candidates.size(), k, 2, kind);
+    write_digested(f, "/marks/outlier", s.mark_outlier, s.mark_outlier.size(), 1, 1, kind);
+    write_digested(f, "/marks/time", s.mark_time, s.mark_time.size(), 1, 1, kind);
+    write_digested(f, "/marks/range", s.mark_range, s.mark_range.size(), 1, 1, kind);
+    write_digested(f, "/marks/mine", s.mark_mine, s.mark_mine.size(), 1, 1, kind);
+    write_digested(f, "/marks/side", s.mark_side, s.mark_side.size(), 1, 1, kind);
+    write_digested(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size(), 1, 1, kind);
+    write_format(f, kFormat, {.current = r.format_version, .oldest = kVersions.oldest, .when_absent = kVersions.when_absent});
     write_model_attributes(f, "/model", s.model);
-    const std::vector<std::pair<std::string, std::string>> fields = root_fields(r, kVersions.current);
+    const std::vector<std::pair<std::string, std::string>> fields = root_fields(r, r.format_version);
+    const std::string digest = digest_name(kind);
     f.set_attribute("/", "status", std::string(s.report.consistent ? "consistent" : "inconsistent"));
     f.set_attribute("/", "mode", std::string(solve_mode_name(s.report.mode)));
     f.set_attribute("/", "inconsistency", s.report.message);
@@ -243,17 +252,17 @@ void write_result(const SolveResult& r, const std::string& path) {
     f.set_attribute("/", "converged", std::int64_t{s.report.converged});
     f.set_attribute("/", "minimal_outliers", std::int64_t{s.report.minimal_outliers});
     f.set_attribute("/", "mine_count", static_cast<std::int64_t>(s.mine_count));
-    f.set_attribute("/", "navigation_sha256", r.navigation_digest);
-    f.set_attribute("/", "bounds_sha256", r.bounds_digest);
-    f.set_attribute("/", "marks_sha256", r.marks_digest);
+    f.set_attribute("/", "navigation_" + digest, r.navigation_digest);
+    f.set_attribute("/", "bounds_" + digest, r.bounds_digest);
+    f.set_attribute("/", "marks_" + digest, r.marks_digest);
     f.set_attribute("/", "mark_count", static_cast<std::int64_t>(s.mark_count()));
     f.set_attribute("/", "gesmi_version", r.version);
     if (r.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*r.epoch));
     write_origin(f, *r.origin);
     for (const auto& [name, ms] : s.timings_ms) f.set_attribute("/", "timing_" + name + "_ms", ms);
     std::vector<std::pair<std::string, std::string>> digested = fields;
-    for (const char* dataset : kDatasets) digested.emplace_back(dataset, *f.string_attribute(dataset, "sha256"));
-    f.set_attribute("/", "sha256", digest_of_fields(digested));
+    for (const char* dataset : kDatasets) digested.emplace_back(dataset, *f.string_attribute(dataset, digest));
+    f.set_attribute("/", digest, digest_of_fields(digested, kind));
     // Informative, outside the digests: how the file was made, and its units.
     write_provenance(f, "trajectory");
     write_units(f, kResultUnits);
@@ -269,7 +278,10 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
   SolveResult r;
   MissionSolution& s = r.solution;
   r.format_version = check_format(f, kFormat, "gesmi result", kVersions);
-  const bool verified = r.format_version >= 2;
+  // The digests to check: none in format 1.
+  const std::optional<DigestKind> verified =
+      r.format_version >= 2 ? std::optional(result_digest_kind(r.format_version)) : std::nullopt;
+  const std::string kind = verified ? digest_name(*verified) : "";
   const auto text = [&](const char* name) {
     const auto v = f.string_attribute("/", name);
     if (!v) bad(f, "/", std::string("missing attribute ") + name);
@@ -313,16 +325,16 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     const std::string mode = text("mode");
     s.report.mode = mode_named(mode);
     if (mode != solve_mode_name(s.report.mode)) bad(f, "/", "attribute mode is not one gesmi writes");
-    r.navigation_digest = text("navigation_sha256");
-    r.bounds_digest = text("bounds_sha256");
-    r.marks_digest = text("marks_sha256");
+    r.navigation_digest = text(("navigation_" + kind).c_str());
+    r.bounds_digest = text(("bounds_" + kind).c_str());
+    r.marks_digest = text(("marks_" + kind).c_str());
   }
   for (const char* name : {"load", "build", "propagate", "waterfall", "write"})
     if (const auto ms = f.double_attribute("/", std::string("timing_") + name + "_ms")) s.timings_ms[name] = *ms;
 
   s.time = f.read_doubles("/time", 1);
   const std::size_t n = s.time.size();
-  if (verified) verify_digest(f, "/time", s.time, n, 1);
+  if (verified) verify_digest(f, "/time", s.time, n, 1, *verified);
   if (n < 2) bad(f, "/time", "expected at least 2 samples");
   for (std::size_t k = 0; k < n; ++k)
     if (!std::isfinite(s.time[k]) || (k > 0 && !(s.time[k] > s.time[k - 1])))
@@ -345,7 +357,7 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
   if (cs.rows != marks || (cs.rows > 0 && cs.columns != k))
     bad(f, "/marks/candidates", "expected " + std::to_string(marks) + " x " + std::to_string(k));
   const std::vector<std::int32_t> candidates = f.read_ints("/marks/candidates");
-  if (verified) verify_digest(f, "/marks/candidates", candidates, cs.rows, cs.columns);
+  if (verified) verify_digest(f, "/marks/candidates", candidates, cs.rows, cs.columns, *verified);
   expect_flags(f, "/marks/candidates", candidates);
   s.candidates.assign(cs.rows, 0);
   for (std::size_t j = 0; j < cs.rows; ++j)
@@ -362,12 +374,12 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     bad(f, "/marks", "expected " + std::to_string(marks) + " rows in every dataset");
   s.gps_outlier = f.read_ints("/gps/outlier", 1);
   if (verified) {
-    verify_digest(f, "/marks/outlier", s.mark_outlier, marks, 1);
-    verify_digest(f, "/marks/time", s.mark_time, marks, 1);
-    verify_digest(f, "/marks/range", s.mark_range, marks, 1);
-    verify_digest(f, "/marks/mine", s.mark_mine, marks, 1);
-    verify_digest(f, "/marks/side", s.mark_side, marks, 1);
-    verify_digest(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size(), 1);
+    verify_digest(f, "/marks/outlier", s.mark_outlier, marks, 1, *verified);
+    verify_digest(f, "/marks/time", s.mark_time, marks, 1, *verified);
+    verify_digest(f, "/marks/range", s.mark_range, marks, 1, *verified);
+    verify_digest(f, "/marks/mine", s.mark_mine, marks, 1, *verified);
+    verify_digest(f, "/marks/side", s.mark_side, marks, 1, *verified);
+    verify_digest(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size(), 1, *verified);
   }
   expect_flags(f, "/marks/outlier", s.mark_outlier);
   expect_flags(f, "/gps/outlier", s.gps_outlier);
@@ -380,7 +392,7 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
                                 std::to_string(s.mine_count) + " mines (-1 for unknown)");
     if (verified && s.mark_side[j] != 1 && s.mark_side[j] != -1) bad(f, "/marks/side", row + ": side must be +1 or -1");
   }
-  if (parts.waterfall && r.format_version >= 3) read_waterfall_cells(f, n, k, s.waterfall);
+  if (parts.waterfall && r.format_version >= 3) read_waterfall_cells(f, n, k, s.waterfall, *verified);
   if (parts.waterfall && r.format_version < 3) {
     const H5Shape ws = f.shape("/waterfall/lower");
     if (ws.rows != n || (k > 0 && ws.columns != k))
@@ -390,8 +402,8 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     if (upper.size() != lower.size()) bad(f, "/waterfall/upper", "shape differs from /waterfall/lower");
     if (k == 0 && !lower.empty()) bad(f, "/waterfall/lower", "cells in a result without mines");
     if (verified) {
-      verify_digest(f, "/waterfall/lower", lower, ws.rows, ws.columns);
-      verify_digest(f, "/waterfall/upper", upper, ws.rows, ws.columns);
+      verify_digest(f, "/waterfall/lower", lower, ws.rows, ws.columns, *verified);
+      verify_digest(f, "/waterfall/upper", upper, ws.rows, ws.columns, *verified);
     }
     Waterfall& w = s.waterfall;
     w.steps = n;
@@ -407,13 +419,14 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     std::vector<std::pair<std::string, std::string>> fields = root_fields(r, r.format_version);
     for (const char* dataset : kDatasets) {
       if (r.format_version < 3 && format_3_only(dataset)) continue;
-      const auto stored = f.string_attribute(dataset, "sha256");
-      if (!stored) bad(f, dataset, "has no sha256 attribute (edited or damaged)");
+      const auto stored = f.string_attribute(dataset, kind);
+      if (!stored) bad(f, dataset, "has no " + kind + " attribute (edited or damaged)");
       fields.emplace_back(dataset, *stored);
     }
-    if (f.string_attribute("/", "sha256") != digest_of_fields(fields))
-      bad(f, "/", "attributes or dataset digests differ from the SHA-256 gesmi recorded when it wrote the file "
-                  "(edited or damaged); solve again to get a result you can trust");
+    if (f.string_attribute("/", kind) != digest_of_fields(fields, *verified))
+      bad(f, "/", std::string("attributes or dataset digests differ from the ") + digest_title(*verified) +
+                      " digest gesmi recorded when it wrote the file (edited or damaged); solve again to get a result "
+                      "you can trust");
   }
   if (s.report.consistent) {
     const auto any_empty = [](const std::vector<Interval>& v) {

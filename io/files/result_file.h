@@ -4,9 +4,10 @@
 // sweeps, timings) with the digests of its inputs and the gesmi version. Written
 // atomically; read back for warm reruns and for `gesmi waterfall` / `candidates`.
 //
-// Every dataset carries its SHA-256 and the root carries one over the attributes
-// and the dataset digests: read_result() refuses a result that differs from what
-// gesmi wrote, so a warm start never trusts edited domains (docs/guarantees.md).
+// Every dataset carries its digest (XXH3-128; SHA-256 in formats 2 to 5) and the root
+// carries one over the attributes and the dataset digests: read_result() refuses a
+// result that differs from what gesmi wrote, so a warm start never trusts edited
+// domains (docs/guarantees.md).
 
 #include <cstdint>
 #include <map>
@@ -14,22 +15,33 @@
 #include <string>
 #include <vector>
 
+#include "io/digest/digest.h"
 #include "solver/mission/mission.h"
 #include "solver/solve/mission_solution.h"
 
 namespace gesmi::io {
 
+/// The layout results are written in (docs/formats.md, "Result file").
+inline constexpr std::int64_t kResultFormat = 6;
+
+/// The digests of a result of that format: SHA-256 in formats 2 to 5, XXH3-128 from 6.
+constexpr DigestKind result_digest_kind(std::int64_t format_version) {
+  return format_version >= 6 ? DigestKind::xxh128 : DigestKind::sha256;
+}
+
 /// A result file: the solution and what proves which inputs it was computed from.
 struct SolveResult {
   MissionSolution solution;
-  std::string navigation_digest, bounds_digest, marks_digest;  // SHA-256 of the inputs (io/files/mission_digest.h)
+  // Digests of the inputs (io/files/mission_digest.h), of the kind of format_version.
+  std::string navigation_digest, bounds_digest, marks_digest;
   std::string version;  // gesmi that wrote it
   std::optional<std::int64_t> epoch;  // the mission's UTC epoch of t = 0, when it has one
   /// The mission's local frame origin (WGS84); absent in results before format 5.
   std::optional<GeoOrigin> origin;
   /// Layout of the file read: 1 for results written before digests existed (readable,
-  /// but unfit for a warm start), 2 to 4 with digests, 5 today (what it is written as).
-  std::int64_t format_version = 5;
+  /// but unfit for a warm start), 2 to 5 with SHA-256 digests, 6 today (what it is
+  /// written as).
+  std::int64_t format_version = kResultFormat;
 };
 
 /// The parts of a result a reader needs besides its attributes, times, mine boxes and
@@ -42,9 +54,13 @@ struct ResultParts {
 
 /// Records in `result` what it was computed from: the digests of the mission's
 /// navigation (`navigation_digest`, computed when empty), bounds and marks, the gesmi
-/// version, the mission's epoch and its origin.
+/// version, the mission's epoch and its origin. The digests are of the kind of
+/// `result.format_version`.
 void record_inputs(SolveResult& result, const Mission& mission, std::string navigation_digest = {});
 
+/// Writes the result in format `result.format_version`: kResultFormat, or 5 (the same
+/// layout with SHA-256 digests, as gesmi wrote it before XXH3-128; for the tests of the
+/// readers of earlier results). FormatError for any other format.
 void write_result(const SolveResult& result, const std::string& path);
 /// Reads a result; FormatError naming the file and dataset when it is not a valid
 /// gesmi result or differs from what gesmi wrote.

@@ -11,9 +11,10 @@
 
 namespace gesmi::io {
 
-/// `navigation` is navigation_digest(mission) when the caller has it already (a solve
-/// stores it in its result): each input is hashed once.
-MissionSolution read_warm_start(const std::string& path, const Mission& mission, const std::string& navigation);
+/// `navigation` is navigation_digest(mission) of today's result format when the caller
+/// has it already (a solve stores it in its result): each input is hashed once (twice
+/// for a result of an earlier format, whose digests are SHA-256).
+MissionSolution read_warm_start(const std::string& path, const Mission& mission, std::string navigation);
 MissionSolution read_warm_start(const std::string& path, const Mission& mission);
 
 }  // namespace gesmi::io

@@ -1,14 +1,15 @@
 #include "io/hdf5/h5_digest.h"
 
-#include "io/digest/sha256.h"
+#include "io/digest/digest.h"
 #include "io/format_error.h"
 
 namespace gesmi::io {
 namespace {
 
 template <class T>
-std::string digest(const std::string& dataset, std::span<const T> values, std::size_t rows, std::size_t columns) {
-  Sha256 h;
+std::string digest(const std::string& dataset, std::span<const T> values, std::size_t rows, std::size_t columns,
+                   DigestKind kind) {
+  Digest h(kind);
   h.add(std::string_view(dataset));
   h.add_count(rows);
   h.add_count(columns);
@@ -18,22 +19,23 @@ std::string digest(const std::string& dataset, std::span<const T> values, std::s
 
 template <class T>
 std::string write_with_digest(H5File& f, const std::string& dataset, std::span<const T> values, std::size_t rows,
-                              std::size_t columns, int rank) {
+                              std::size_t columns, int rank, DigestKind kind) {
   f.write(dataset, values, rows, columns, rank);
-  const std::string hex = digest(dataset, values, rows, columns);
-  f.set_attribute(dataset, "sha256", hex);
+  const std::string hex = digest(dataset, values, rows, columns, kind);
+  f.set_attribute(dataset, digest_name(kind), hex);
   return hex;
 }
 
 template <class T>
 std::string verify(const H5File& f, const std::string& dataset, std::span<const T> values, std::size_t rows,
-                   std::size_t columns) {
-  const std::optional<std::string> stored = f.string_attribute(dataset, "sha256");
-  if (!stored) throw FormatError(f.path() + ": " + dataset + ": has no sha256 attribute (not written by this gesmi)");
-  const std::string hex = digest(dataset, values, rows, columns);
+                   std::size_t columns, DigestKind kind) {
+  const std::optional<std::string> stored = f.string_attribute(dataset, digest_name(kind));
+  if (!stored)
+    throw FormatError(f.path() + ": " + dataset + ": has no " + digest_name(kind) + " attribute (not written by this gesmi)");
+  const std::string hex = digest(dataset, values, rows, columns, kind);
   if (*stored != hex)
-    throw FormatError(f.path() + ": " + dataset +
-                      ": contents differ from the SHA-256 gesmi recorded when it wrote the file (edited or damaged); "
+    throw FormatError(f.path() + ": " + dataset + ": contents differ from the " +
+digest_title(kind) + " digest gesmi recorded when it wrote the file (edited or damaged); "
                       "solve again to get a result you can trust");
   return hex;
 }
@@ -41,24 +43,24 @@ std::string verify(const H5File& f, const std::string& dataset, std::span<const 
 }  // namespace
 
 std::string write_digested(H5File& f, const std::string& dataset, std::span<const double> values, std::size_t rows,
-                           std::size_t columns, int rank) {
-  return write_with_digest(f, dataset, values, rows, columns, rank);
+                           std::size_t columns, int rank, DigestKind kind) {
+  return write_with_digest(f, dataset, values, rows, columns, rank, kind);
 }
 std::string write_digested(H5File& f, const std::string& dataset, std::span<const std::int32_t> values,
-                           std::size_t rows, std::size_t columns, int rank) {
-  return write_with_digest(f, dataset, values, rows, columns, rank);
+                           std::size_t rows, std::size_t columns, int rank, DigestKind kind) {
+  return write_with_digest(f, dataset, values, rows, columns, rank, kind);
 }
 std::string verify_digest(const H5File& f, const std::string& dataset, std::span<const double> values,
-                          std::size_t rows, std::size_t columns) {
-  return verify(f, dataset, values, rows, columns);
+                          std::size_t rows, std::size_t columns, DigestKind kind) {
+  return verify(f, dataset, values, rows, columns, kind);
 }
 std::string verify_digest(const H5File& f, const std::string& dataset, std::span<const std::int32_t> values,
-                          std::size_t rows, std::size_t columns) {
-  return verify(f, dataset, values, rows, columns);
+                          std::size_t rows, std::size_t columns, DigestKind kind) {
+  return verify(f, dataset, values, rows, columns, kind);
 }
 
-std::string digest_of_fields(const std::vector<std::pair<std::string, std::string>>& fields) {
-  Sha256 h;
+std::string digest_of_fields(const std::vector<std::pair<std::string, std::string>>& fields, DigestKind kind) {
+  Digest h(kind);
   for (const auto& [name, value] : fields) {
     h.add(std::string_view(name));
     h.add(std::string_view(value));

@@ -269,6 +269,9 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
   else
     solve_cold(mission, in, options, s, net);
 
+  // Copied once the passes are done: not held during the first pass's build, the
+  // solve's peak (and at 10^6 steps it fills a hole the priors left in the heap).
+  s.time = mission.time;
   s.candidates.assign(mission.mark_count(), 0);
   if (s.domains.candidates.size() == net.detections.size())
     for (std::size_t j = 0; j < net.detections.size(); ++j) s.candidates[net.detections[j].mark] = s.domains.candidates[j];
@@ -283,7 +286,6 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
                                     [&](double fraction) { stage("waterfall", fraction); });
     s.timings_ms["waterfall"] = elapsed_ms(start);
   }
-  s.time = mission.time;  // copied last: not held during the propagation, the solve's peak
   return s;
 }
 

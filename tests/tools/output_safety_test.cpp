@@ -19,7 +19,7 @@
 #include <set>
 #include <thread>
 
-#include "io/digest/sha256.h"
+#include "io/digest/digest.h"
 #include "tests/support/paths.h"
 #include "tests/support/run_command.h"
 

@@ -64,7 +64,7 @@ int export_result(const po::variables_map& v, const std::string& format, const s
   if (v.count("mission")) {
     if (format != "geojson") throw UsageError("--mission: only the geojson format uses the mission (its GPS fixes)");
     mission = io::read_mission(v["mission"].as<std::string>(), io::TruthReading::skip);
-    if (io::navigation_digest(*mission) != r.navigation_digest)
+    if (io::navigation_digest(*mission, io::result_digest_kind(r.format_version)) != r.navigation_digest)
       throw UsageError("--mission: " + v["mission"].as<std::string>() + " is not the mission " + path +
                        " was solved from (its navigation digest differs)");
   }

@@ -142,25 +142,27 @@ TEST(HostileHdf5, FilesAUserMayWriteWithH5pyAreStillRead) {
 
 TEST(HostileHdf5, EditedResultsAreRefusedNamingWhatDiffers) {
   const Case cases[] = {
-      {"lo = f['/tube/lower'][:]\nf['/tube/lower'][:] = np.roll(lo, 1, axis=0)", "/tube/lower: contents differ from the SHA-256"},
+      {"lo = f['/tube/lower'][:]\nf['/tube/lower'][:] = np.roll(lo, 1, axis=0)", "/tube/lower: contents differ from the XXH3-128 digest"},
       {"u = f['/tube/upper'][:]\nu[100:200] += 50\nf['/tube/upper'][:] = u", "/tube/upper: contents differ"},
       {"m = f['/mines/lower'][:]\nm[0, 0] = -123456.0\nf['/mines/lower'][:] = m", "/mines/lower: contents differ"},
       {"lo = f['/tube/lower'][:]\nlo[5] = np.nan\nf['/tube/lower'][:] = lo", "/tube/lower: contents differ"},
       {"c = f['/marks/candidates'][:]\nc[:] = 1\nf['/marks/candidates'][:] = c", "/marks/candidates: contents differ"},
-      {"del f['/increments/lower'].attrs['sha256']", "/increments/lower: has no sha256 attribute"},
+      {"del f['/increments/lower'].attrs['xxh128']", "/increments/lower: has no xxh128 attribute"},
       {"f.attrs.modify('mark_count', f.attrs['mark_count'] - 1)", "/marks/candidates: expected"},
       {"f.attrs['sweeps'] = np.int64(999)", "/: attributes or dataset digests differ"},
       {"f.attrs['inconsistency'] = 'all fine'", "/: attributes or dataset digests differ"},
-      {"f.attrs['bounds_sha256'] = np.array([b'a', b'b'])", "attribute bounds_sha256 holds 2 values"},
+      {"f.attrs['bounds_xxh128'] = np.array([b'a', b'b'])", "attribute bounds_xxh128 holds 2 values"},
       {"s = f['/waterfall/step'][:]\ns[[0, 1]] = s[[1, 0]] + 1\nf['/waterfall/step'][:] = s", "/waterfall/step: contents differ"},
       {"m = f['/waterfall/mine'][:]\ndel f['/waterfall/mine']\nf['/waterfall/mine'] = m[:-1]",
        "/waterfall/mine: " },
-      // Values edited and their dataset digest recomputed the way gesmi computes it:
-      // the root digest, which covers every dataset digest, still tells.
-      {"import hashlib, struct\nname = b'/tube/lower'\nlo = f['/tube/lower'][:] - 1.0\nf['/tube/lower'][:] = lo\n"
-       "h = hashlib.sha256(struct.pack('<Q', len(name)) + name + struct.pack('<QQQ', lo.shape[0], 3, lo.size) + "
-       "lo.astype('<f8').tobytes()).hexdigest()\nf['/tube/lower'].attrs['sha256'] = h",
-       "/: attributes or dataset digests differ"},
+      // Values edited and their dataset digest recomputed the way gesmi computes it, by
+      // an independent XXH3-128 (Python's xxhash): the dataset's check passes (so gesmi's
+      // digest is that one), and the root digest, which covers every dataset digest,
+      // still tells.
+      {"import xxhash, struct\nname = b'/tube/lower'\nlo = f['/tube/lower'][:] - 1.0\nf['/tube/lower'][:] = lo\n"
+       "h = xxhash.xxh3_128_hexdigest(struct.pack('<Q', len(name)) + name + struct.pack('<QQQ', lo.shape[0], 3, lo.size) + "
+       "lo.astype('<f8').tobytes())\nf['/tube/lower'].attrs['xxh128'] = h",
+       "/: attributes or dataset digests differ from the XXH3-128 digest"},
   };
   for (const Case& c : cases) expect_refused(samples().result, c, [](const std::string& p) { return read_result(p); });
 }
@@ -173,7 +175,7 @@ TEST(HostileHdf5, PartialReadsCheckWhatTheyReadAndTheRootDigest) {
       {"s = f['/waterfall/step'][:]\ns[[0, 1]] = s[[1, 0]] + 1\nf['/waterfall/step'][:] = s", "/waterfall/step: contents differ"},
       {"c = f['/marks/candidates'][:]\nc[:] = 1\nf['/marks/candidates'][:] = c", "/marks/candidates: contents differ"},
       {"f.attrs['sweeps'] = np.int64(999)", "/: attributes or dataset digests differ"},
-      {"f['/tube/lower'].attrs['sha256'] = 'ab'", "/: attributes or dataset digests differ"},
+      {"f['/tube/lower'].attrs['xxh128'] = 'ab'", "/: attributes or dataset digests differ"},
   };
   for (const Case& c : cases) expect_refused(samples().result, c, without_tube);
   const std::string tube_edited = edited(samples().result, "u = f['/tube/upper'][:]\nu[100:200] += 50\nf['/tube/upper'][:] = u");
@@ -185,13 +187,13 @@ TEST(HostileHdf5, PartialReadsCheckWhatTheyReadAndTheRootDigest) {
 TEST(HostileHdf5, ResultsOfEarlierVersionsAreReadButCheckedValueByValue) {
   // A result as gesmi 0.1 wrote it: no format_version, no digests, a dense waterfall.
   const std::string strip =
-      "del f.attrs['format_version']\ndel f.attrs['sha256']\n"
+      "del f.attrs['format_version']\ndel f.attrs['xxh128']\n"
       "n = f['/time'].shape[0]\nk = int(f.attrs['mine_count'])\nlo = np.full((n, k), np.nan)\nhi = np.full((n, k), np.nan)\n"
       "s = f['/waterfall/step'][:]\nm = f['/waterfall/mine'][:]\n"
       "lo[s, m] = f['/waterfall/lower'][:]\nhi[s, m] = f['/waterfall/upper'][:]\n"
       "for d in ['step', 'mine', 'lower', 'upper']: del f['/waterfall/' + d]\n"
       "f['/waterfall/lower'] = lo\nf['/waterfall/upper'] = hi\n"
-      "def drop(name, obj):\n    if isinstance(obj, h5py.Dataset) and 'sha256' in obj.attrs: del obj.attrs['sha256']\n"
+      "def drop(name, obj):\n    if isinstance(obj, h5py.Dataset) and 'xxh128' in obj.attrs: del obj.attrs['xxh128']\n"
       "f.visititems(drop)\n";
   const SolveResult old = read_result(edited(samples().result, strip));
   EXPECT_EQ(old.format_version, 1);
@@ -213,6 +215,73 @@ TEST(HostileHdf5, ResultsOfEarlierVersionsAreReadButCheckedValueByValue) {
   };
   for (const Case& c : cases)
     expect_refused(samples().result, {(strip + c.edit).c_str(), c.must_name}, [](const std::string& p) { return read_result(p); });
+}
+
+// Results of formats 2 to 5 carry SHA-256 digests. Format 5 is today's layout with
+// SHA-256 instead of XXH3-128: written here as the gesmi before format 6 wrote it.
+std::string format_5_result() {
+  static const std::string path = [] {
+    SolveResult r = read_result(samples().result);
+    r.format_version = 5;
+    r.navigation_digest.clear();  // recorded again, as SHA-256
+    record_inputs(r, read_mission(samples().mission));
+    const std::string out = test::temp_folder("hostile-format-5") + "/r5.h5";
+    write_result(r, out);
+    return out;
+  }();
+  return path;
+}
+
+TEST(HostileHdf5, FormatFiveResultsAreCheckedWithTheirSha256) {
+  const SolveResult five = read_result(format_5_result());
+  EXPECT_EQ(five.format_version, 5);
+  EXPECT_EQ(five.navigation_digest.size(), 64u);  // SHA-256: 64 hex digits, XXH3-128: 32
+  EXPECT_EQ(read_result(samples().result).navigation_digest.size(), 32u);
+  // Their dataset digests are Python's hashlib SHA-256 of the same bytes: the check of
+  // /tube/lower passes once its values and digest are both changed, and the root
+  // digest still tells.
+  const Case cases[] = {
+      {"lo = f['/tube/lower'][:]\nf['/tube/lower'][:] = np.roll(lo, 1, axis=0)", "/tube/lower: contents differ from the SHA-256 digest"},
+      {"f.attrs['sweeps'] = np.int64(999)", "/: attributes or dataset digests differ from the SHA-256 digest"},
+      {"del f['/increments/lower'].attrs['sha256']", "/increments/lower: has no sha256 attribute"},
+      {"import hashlib, struct\nname = b'/tube/lower'\nlo = f['/tube/lower'][:] - 1.0\nf['/tube/lower'][:] = lo\n"
+       "h = hashlib.sha256(struct.pack('<Q', len(name)) + name + struct.pack('<QQQ', lo.shape[0], 3, lo.size) + "
+       "lo.astype('<f8').tobytes()).hexdigest()\nf['/tube/lower'].attrs['sha256'] = h",
+       "/: attributes or dataset digests differ from the SHA-256 digest"},
+      // An XXH3-128 digest in a format-5 file is not one it is checked with.
+      {"f.attrs.modify('format_version', 6)", "/: missing attribute navigation_xxh128"},
+  };
+  for (const Case& c : cases) expect_refused(format_5_result(), c, [](const std::string& p) { return read_result(p); });
+}
+
+TEST(HostileHdf5, AFormatFiveResultWarmStartsAsItsFormatSixTwin) {
+  // The mission's fingerprints are computed as SHA-256 for it: the same rerun as from
+  // today's result, bitwise.
+  // (no mark added: what is checked is the comparison of the fingerprints)
+  const std::string folder = test::temp_folder("hostile-warm-5");
+  for (const auto& [from, out] : {std::pair{samples().result, folder + "/w6.h5"}, std::pair{format_5_result(), folder + "/w5.h5"}}) {
+    const test::CommandResult r = test::run_gesmi({"solve", samples().mission, "--from", from, "-o", out});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const SolveResult w6 = read_result(folder + "/w6.h5"), w5 = read_result(folder + "/w5.h5");
+  EXPECT_EQ(w5.solution.report.mode, SolveMode::warm);
+  EXPECT_EQ(w6.solution.report.mode, SolveMode::warm);
+  EXPECT_EQ(w5.format_version, kResultFormat);  // a rerun is written in today's format
+  EXPECT_EQ(w5.navigation_digest, w6.navigation_digest);
+  for (int c = 0; c < 3; ++c) {
+    const auto& a = c == 0 ? w5.solution.domains.px : (c == 1 ? w5.solution.domains.py : w5.solution.domains.pz);
+    const auto& b = c == 0 ? w6.solution.domains.px : (c == 1 ? w6.solution.domains.py : w6.solution.domains.pz);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      EXPECT_EQ(a[k].lo(), b[k].lo());
+      EXPECT_EQ(a[k].hi(), b[k].hi());
+    }
+  }
+  // Another mission is still refused: the SHA-256 fingerprints are compared.
+  const std::string other = edited(samples().mission, "d = f['/nav/depth'][:]\nd[3] += 0.5\nf['/nav/depth'][:] = d");
+  const test::CommandResult refused = test::run_gesmi({"solve", other, "--from", format_5_result(), "-o", folder + "/w7.h5"});
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("the navigation data"), std::string::npos) << refused.err;
 }
 
 TEST(HostileHdf5, WarmStartFromAnEditedResultExitsTwoAndWritesNothing) {
