@@ -84,7 +84,7 @@ void ArrowheadChain::solve() {
   std::vector<std::size_t> events;
   events.reserve(mixed_.size());
   for (const auto& [k, b] : mixed_) events.push_back(k);
-  coupling_start_.resize((n_ + kCouplingBlock - 1) / kCouplingBlock);
+  std::vector<Mat3> coupling_start((n_ + kCouplingBlock - 1) / kCouplingBlock);  // T_k at each block's start
   std::vector<MatX> segment_b;  // B_e of each segment (3 x q)
   MatX d = d_;
   VecX eta_m = eta_m_;
@@ -116,7 +116,7 @@ void ArrowheadChain::solve() {
   if (n_ > 0)
     if (const MatX* b0 = mixed_at(0)) open_segment(*b0, nullptr);
   for (std::size_t k = 0; k < n_; ++k) {
-    if (k % kCouplingBlock == 0) coupling_start_[k / kCouplingBlock] = t;
+    if (k % kCouplingBlock == 0) coupling_start[k / kCouplingBlock] = t;
     const Mat3 s_k = a.inverse();
     const Vec3 c_k = s_k * eta;
     diag_[k] = s_k;  // the information block of p_k was read at step k - 1
@@ -164,7 +164,7 @@ void ArrowheadChain::solve() {
   const auto recompute_coupling = [&](std::size_t first, std::size_t end) {
     int segment = segment_of(first);
     auto next_event = static_cast<std::size_t>(segment + 1);  // the first event after `first`
-    Mat3 t_k = coupling_start_[first / kCouplingBlock];
+    Mat3 t_k = coupling_start[first / kCouplingBlock];
     for (std::size_t k = first; k < end; ++k) {
       const bool event = next_event < events.size() && events[next_event] == k;
       if (event) {

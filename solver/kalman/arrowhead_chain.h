@@ -91,7 +91,6 @@ class ArrowheadChain {
   // Results.
   VecX m_mean_;
   MatX m_cov_;
-  std::vector<Mat3> coupling_start_;  // T_k at every kCouplingBlock-th step, kept between solves
   std::map<std::size_t, MatX> cross_at_;  // Cov(p_k, m) at the steps asked for
   std::size_t column_first_ = 0, column_count_ = 0;
   std::vector<double> cross_columns_;     // n x 3 x count, column-major per step
