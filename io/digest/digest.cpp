@@ -12,6 +12,10 @@
 #define XXH_INLINE_ALL
 #include <xxhash.h>
 
+// XXH3's output is stable from xxHash 0.8.0 on; an earlier one would compute other
+// digests and refuse every result a current build wrote (and the reverse).
+static_assert(XXH_VERSION_NUMBER >= 800, "gesmi needs xxHash 0.8.0 or later (XXH3-128 as stable)");
+
 namespace gesmi::io {
 namespace {
 
@@ -31,25 +35,25 @@ const char* digest_name(DigestKind kind) { return kind == DigestKind::sha256 ? "
 const char* digest_title(DigestKind kind) { return kind == DigestKind::sha256 ? "SHA-256" : "XXH3-128"; }
 
 struct Digest::State {
+  struct FreeSha {
+    void operator()(EVP_MD_CTX* c) const { EVP_MD_CTX_free(c); }
+  };
+  struct FreeXxh {
+    void operator()(XXH3_state_t* x) const { XXH3_freeState(x); }
+  };
   DigestKind kind;
-  EVP_MD_CTX* sha = nullptr;
-  XXH3_state_t* xxh = nullptr;
+  std::unique_ptr<EVP_MD_CTX, FreeSha> sha;  // (freed even when the constructor throws)
+  std::unique_ptr<XXH3_state_t, FreeXxh> xxh;
   explicit State(DigestKind k) : kind(k) {
     if (kind == DigestKind::sha256) {
-      sha = EVP_MD_CTX_new();
-      if (!sha || EVP_DigestInit_ex(sha, EVP_sha256(), nullptr) != 1)
+      sha.reset(EVP_MD_CTX_new());
+      if (!sha || EVP_DigestInit_ex(sha.get(), EVP_sha256(), nullptr) != 1)
         throw std::runtime_error("SHA-256 is not available from libcrypto");
     } else {
-      xxh = XXH3_createState();
-      if (!xxh || XXH3_128bits_reset(xxh) != XXH_OK) throw std::runtime_error("XXH3-128: cannot start a digest");
+      xxh.reset(XXH3_createState());
+      if (!xxh || XXH3_128bits_reset(xxh.get()) != XXH_OK) throw std::runtime_error("XXH3-128: cannot start a digest");
     }
   }
-  ~State() {
-    EVP_MD_CTX_free(sha);
-    XXH3_freeState(xxh);
-  }
-  State(const State&) = delete;
-  State& operator=(const State&) = delete;
 };
 
 Digest::Digest(DigestKind kind) : state_(std::make_unique<State>(kind)) {}
@@ -60,8 +64,8 @@ Digest& Digest::operator=(Digest&&) noexcept = default;
 void Digest::add_bytes(const void* data, std::size_t size) {
   if (size == 0) return;
   if (state_->kind == DigestKind::sha256) {
-    if (EVP_DigestUpdate(state_->sha, data, size) != 1) throw std::runtime_error("SHA-256 update failed");
-  } else if (XXH3_128bits_update(state_->xxh, data, size) != XXH_OK) {
+    if (EVP_DigestUpdate(state_->sha.get(), data, size) != 1) throw std::runtime_error("SHA-256 update failed");
+  } else if (XXH3_128bits_update(state_->xxh.get(), data, size) != XXH_OK) {
     throw std::runtime_error("XXH3-128 update failed");
   }
 }
@@ -70,11 +74,11 @@ std::string Digest::hex() {
   if (state_->kind == DigestKind::sha256) {
     unsigned char digest[EVP_MAX_MD_SIZE];
     unsigned int length = 0;
-    if (EVP_DigestFinal_ex(state_->sha, digest, &length) != 1) throw std::runtime_error("SHA-256 final failed");
+    if (EVP_DigestFinal_ex(state_->sha.get(), digest, &length) != 1) throw std::runtime_error("SHA-256 final failed");
     return hex_of(digest, length);
   }
   XXH128_canonical_t canonical;
-  XXH128_canonicalFromHash(&canonical, XXH3_128bits_digest(state_->xxh));
+  XXH128_canonicalFromHash(&canonical, XXH3_128bits_digest(state_->xxh.get()));
   return hex_of(canonical.digest, sizeof canonical.digest);
 }
 

@@ -2,11 +2,12 @@
 // The digests gesmi computes, behind one interface:
 // - SHA-256 (OpenSSL's libcrypto): the provenance of input files, which anyone can
 //   check with `sha256sum`, and the integrity digests of result files of formats 2 to 5;
-// - XXH3-128 (libxxhash; `xxhsum -H2` prints it as XXH128): the integrity digests of
-//   result files from format 6 and the mission fingerprints they store. It is about 15
-//   times faster, and what those digests guard against, a file changed after gesmi
-//   wrote it, needs no cryptographic hash: neither hash stops someone who recomputes
-//   the digests on purpose (docs/guarantees.md).
+// - XXH3-128 (xxHash, compiled in from its header; `xxhsum -H2` prints it as XXH128):
+//   the integrity digests of result files from format 6 and the mission fingerprints
+//   they store. It is about nine times faster here (docs/performance.md), and what
+//   those digests guard against, a file changed after gesmi wrote it, needs no
+//   cryptographic hash: neither hash stops someone who recomputes the digests on
+//   purpose (docs/guarantees.md).
 //
 //   Digest h(DigestKind::xxh128);
 //   h.add(std::span<const double>(values));

@@ -57,12 +57,22 @@ constexpr DatasetUnits kResultUnits[] = {
 
 bool format_3_only(std::string_view name) { return name == "/waterfall/step" || name == "/waterfall/mine"; }
 
+// The root attributes holding the input digests, named after their kind
+// (navigation_xxh128, ...; navigation_sha256, ... in formats 2 to 5).
+struct InputDigestNames {
+  std::string navigation, bounds, marks;
+};
+InputDigestNames input_digest_names(DigestKind kind) {
+  const std::string name = digest_name(kind);
+  return {"navigation_" + name, "bounds_" + name, "marks_" + name};
+}
+
 // The root attributes the root digest covers (timings are informative and left out).
 // `format_version`: the layout the fields are listed for (a result is always written
 // as today's, whatever format it was read from).
 std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& r, std::int64_t format_version) {
   const MissionSolution& s = r.solution;
-  const std::string kind = digest_name(result_digest_kind(format_version));
+  const InputDigestNames inputs = input_digest_names(result_digest_kind(format_version));
   std::vector<std::pair<std::string, std::string>> fields = {
           {"status", s.report.consistent ? "consistent" : "inconsistent"},
           {"mode", solve_mode_name(s.report.mode)},
@@ -71,9 +81,9 @@ std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& 
           {"converged", std::to_string(int{s.report.converged})},
           {"minimal_outliers", std::to_string(s.report.minimal_outliers)},
           {"mine_count", std::to_string(s.mine_count)},
-          {"navigation_" + kind, r.navigation_digest},
-          {"bounds_" + kind, r.bounds_digest},
-          {"marks_" + kind, r.marks_digest},
+          {inputs.navigation, r.navigation_digest},
+          {inputs.bounds, r.bounds_digest},
+          {inputs.marks, r.marks_digest},
           {"mark_count", std::to_string(s.mark_count())},
           {"gesmi_version", r.version}};
   if (r.epoch) fields.emplace_back("epoch_utc", format_iso8601(*r.epoch));
@@ -195,6 +205,7 @@ void read_waterfall_cells(const H5File& f, std::size_t n, std::size_t k, Waterfa
 }  // namespace
 
 void record_inputs(SolveResult& r, const Mission& mission, std::string navigation) {
+  r.format_version = kResultFormat;  // the kind of the digests recorded, and the file's layout
   const DigestKind kind = result_digest_kind(r.format_version);
   r.navigation_digest = navigation.empty() ? navigation_digest(mission, kind) : std::move(navigation);
   r.bounds_digest = bounds_digest(mission.model, kind);
@@ -206,10 +217,12 @@ void record_inputs(SolveResult& r, const Mission& mission, std::string navigatio
 
 void write_result(const SolveResult& r, const std::string& path) {
   if (!r.origin) throw FormatError(path + ": the result has no origin to record (record_inputs() gives it)");
-  if (r.format_version != kResultFormat && r.format_version != 5)
-    throw FormatError(path + ": results are written in format " + std::to_string(kResultFormat) + " (or 5), not " +
-                      std::to_string(r.format_version));
-  const DigestKind kind = result_digest_kind(r.format_version);
+  // The input digests must be of today's kind (a result read from an earlier format holds
+  // SHA-256 ones).
+  if (r.format_version != kResultFormat)
+    throw FormatError(path + ": the result's input digests are those of format " + std::to_string(r.format_version) +
+                      " (record_inputs() records today's)");
+  const DigestKind kind = result_digest_kind(kResultFormat);
   const MissionSolution& s = r.solution;
   AtomicOutput out(path);
   {
@@ -241,9 +254,9 @@ void write_result(const SolveResult& r, const std::string& path) {
     write_digested(f, "/marks/mine", s.mark_mine, s.mark_mine.size(), 1, 1, kind);
     write_digested(f, "/marks/side", s.mark_side, s.mark_side.size(), 1, 1, kind);
     write_digested(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size(), 1, 1, kind);
-    write_format(f, kFormat, {.current = r.format_version, .oldest = kVersions.oldest, .when_absent = kVersions.when_absent});
+    write_format(f, kFormat, kVersions);
     write_model_attributes(f, "/model", s.model);
-    const std::vector<std::pair<std::string, std::string>> fields = root_fields(r, r.format_version);
+    const std::vector<std::pair<std::string, std::string>> fields = root_fields(r, kResultFormat);
     const std::string digest = digest_name(kind);
     f.set_attribute("/", "status", std::string(s.report.consistent ? "consistent" : "inconsistent"));
     f.set_attribute("/", "mode", std::string(solve_mode_name(s.report.mode)));
@@ -252,9 +265,10 @@ void write_result(const SolveResult& r, const std::string& path) {
     f.set_attribute("/", "converged", std::int64_t{s.report.converged});
     f.set_attribute("/", "minimal_outliers", std::int64_t{s.report.minimal_outliers});
     f.set_attribute("/", "mine_count", static_cast<std::int64_t>(s.mine_count));
-    f.set_attribute("/", "navigation_" + digest, r.navigation_digest);
-    f.set_attribute("/", "bounds_" + digest, r.bounds_digest);
-    f.set_attribute("/", "marks_" + digest, r.marks_digest);
+    const InputDigestNames inputs = input_digest_names(kind);
+    f.set_attribute("/", inputs.navigation, r.navigation_digest);
+    f.set_attribute("/", inputs.bounds, r.bounds_digest);
+    f.set_attribute("/", inputs.marks, r.marks_digest);
     f.set_attribute("/", "mark_count", static_cast<std::int64_t>(s.mark_count()));
     f.set_attribute("/", "gesmi_version", r.version);
     if (r.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*r.epoch));
@@ -325,9 +339,10 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     const std::string mode = text("mode");
     s.report.mode = mode_named(mode);
     if (mode != solve_mode_name(s.report.mode)) bad(f, "/", "attribute mode is not one gesmi writes");
-    r.navigation_digest = text(("navigation_" + kind).c_str());
-    r.bounds_digest = text(("bounds_" + kind).c_str());
-    r.marks_digest = text(("marks_" + kind).c_str());
+    const InputDigestNames inputs = input_digest_names(*verified);
+    r.navigation_digest = text(inputs.navigation.c_str());
+    r.bounds_digest = text(inputs.bounds.c_str());
+    r.marks_digest = text(inputs.marks.c_str());
   }
   for (const char* name : {"load", "build", "propagate", "waterfall", "write"})
     if (const auto ms = f.double_attribute("/", std::string("timing_") + name + "_ms")) s.timings_ms[name] = *ms;
@@ -424,9 +439,7 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
       fields.emplace_back(dataset, *stored);
     }
     if (f.string_attribute("/", kind) != digest_of_fields(fields, *verified))
-      bad(f, "/", std::string("attributes or dataset digests differ from the ") + digest_title(*verified) +
-                      " digest gesmi recorded when it wrote the file (edited or damaged); solve again to get a result "
-                      "you can trust");
+      bad(f, "/", "attributes or dataset digests " + differ_from_recorded(*verified));
   }
   if (s.report.consistent) {
     const auto any_empty = [](const std::vector<Interval>& v) {

@@ -39,8 +39,8 @@ struct SolveResult {
   /// The mission's local frame origin (WGS84); absent in results before format 5.
   std::optional<GeoOrigin> origin;
   /// Layout of the file read: 1 for results written before digests existed (readable,
-  /// but unfit for a warm start), 2 to 5 with SHA-256 digests, 6 today (what it is
-  /// written as).
+  /// but unfit for a warm start), 2 to 5 with SHA-256 digests, 6 with XXH3-128 ones;
+  /// a result is always written in kResultFormat.
   std::int64_t format_version = kResultFormat;
 };
 
@@ -53,14 +53,13 @@ struct ResultParts {
 };
 
 /// Records in `result` what it was computed from: the digests of the mission's
-/// navigation (`navigation_digest`, computed when empty), bounds and marks, the gesmi
-/// version, the mission's epoch and its origin. The digests are of the kind of
-/// `result.format_version`.
+/// navigation (`navigation_digest`, of today's kind, computed when empty), bounds and
+/// marks, the gesmi version, the mission's epoch and its origin; sets its
+/// format_version to kResultFormat.
 void record_inputs(SolveResult& result, const Mission& mission, std::string navigation_digest = {});
 
-/// Writes the result in format `result.format_version`: kResultFormat, or 5 (the same
-/// layout with SHA-256 digests, as gesmi wrote it before XXH3-128; for the tests of the
-/// readers of earlier results). FormatError for any other format.
+/// Writes the result in today's format; FormatError when its input digests are not of
+/// today's kind (a result read from an earlier format, not recorded again).
 void write_result(const SolveResult& result, const std::string& path);
 /// Reads a result; FormatError naming the file and dataset when it is not a valid
 /// gesmi result or differs from what gesmi wrote.

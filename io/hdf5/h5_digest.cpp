@@ -34,9 +34,7 @@ std::string verify(const H5File& f, const std::string& dataset, std::span<const 
     throw FormatError(f.path() + ": " + dataset + ": has no " + digest_name(kind) + " attribute (not written by this gesmi)");
   const std::string hex = digest(dataset, values, rows, columns, kind);
   if (*stored != hex)
-    throw FormatError(f.path() + ": " + dataset + ": contents differ from the " +
-digest_title(kind) + " digest gesmi recorded when it wrote the file (edited or damaged); "
-                      "solve again to get a result you can trust");
+    throw FormatError(f.path() + ": " + dataset + ": contents " + differ_from_recorded(kind));
   return hex;
 }
 
@@ -57,6 +55,11 @@ std::string verify_digest(const H5File& f, const std::string& dataset, std::span
 std::string verify_digest(const H5File& f, const std::string& dataset, std::span<const std::int32_t> values,
                           std::size_t rows, std::size_t columns, DigestKind kind) {
   return verify(f, dataset, values, rows, columns, kind);
+}
+
+std::string differ_from_recorded(DigestKind kind) {
+  return std::string("differ from the ") + digest_title(kind) +
+         " digest gesmi recorded when it wrote the file (edited or damaged); solve again to get a result you can trust";
 }
 
 std::string digest_of_fields(const std::vector<std::pair<std::string, std::string>>& fields, DigestKind kind) {

@@ -31,6 +31,10 @@ std::string verify_digest(const H5File& file, const std::string& dataset, std::s
 std::string verify_digest(const H5File& file, const std::string& dataset, std::span<const std::int32_t> values,
                           std::size_t rows, std::size_t columns, DigestKind kind);
 
+/// "differ from the <kind> digest gesmi recorded ...; solve again ...": the end of the
+/// message for values that do not match their digest.
+std::string differ_from_recorded(DigestKind kind);
+
 /// The digest of named values (attributes), in the given order.
 std::string digest_of_fields(const std::vector<std::pair<std::string, std::string>>& fields, DigestKind kind);
 

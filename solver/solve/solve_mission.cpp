@@ -132,8 +132,8 @@ void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOption
   }
   if (s.report.consistent || !options.diagnose) return;
   start = Clock::now();
-  // (the first pass took their vertical part, and the second released them)
-  if (priors.dx.empty() || priors.dz.empty()) priors = frameless_sensor_priors(mission, mission.model);
+  // Built again: the first pass took their vertical part (and a second pass released them).
+  priors = frameless_sensor_priors(mission, mission.model);
   // The diagnosis asks which single mark or fix is wrong: margins from the fixes, or
   // over a tube that trusted every datum, would presume the answer, so it takes the
   // zone's (sound whichever datum is wrong).
