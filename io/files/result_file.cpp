@@ -109,8 +109,7 @@ SolveMode mode_named(const std::string& name) {
 
 // Interval arrays as N x 3 lower / upper datasets (empty bounds as NaN), one buffer
 // at a time (the largest memory of a solve is that of its result's writing).
-void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interval>* axes[3], std::size_t n,
-                  DigestKind kind) {
+void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interval>* axes[3], std::size_t n) {
   std::vector<double> rows(3 * n);
   for (const bool upper : {false, true}) {
     for (std::size_t k = 0; k < n; ++k)
@@ -118,7 +117,7 @@ void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interv
         const Interval& x = (*axes[c])[k];
         rows[3 * k + c] = x.is_empty() ? NAN : (upper ? x.hi() : x.lo());
       }
-    write_digested(f, prefix + (upper ? "/upper" : "/lower"), rows, n, 3, 2, kind);
+    write_digested(f, prefix + (upper ? "/upper" : "/lower"), rows, n, kResultDigest, 3, 2);
   }
 }
 
@@ -157,14 +156,14 @@ void expect_flags(const H5File& f, const std::string& dataset, const std::vector
 // The feasible cells of the waterfall in (step, mine) order: most of a dense waterfall
 // is NaN (97.5 % at 10^7 steps), a mine being within the sonar's reach on few steps.
 void write_waterfall_cells(H5File& f, const Waterfall& w, std::size_t steps_in_tube, std::size_t mine_count,
-                           const std::string& path, DigestKind kind) {
+                           const std::string& path) {
   // Cells not written would read back as "no mine can appear there".
   if (w.steps != steps_in_tube || w.mines != mine_count)
     throw FormatError(path + ": the solution has no waterfall to write (solve with the waterfall computed)");
-  write_digested(f, "/waterfall/step", w.step, w.cells(), 1, 1, kind);
-  write_digested(f, "/waterfall/mine", w.mine, w.cells(), 1, 1, kind);
-  write_digested(f, "/waterfall/lower", w.lower, w.cells(), 1, 1, kind);
-  write_digested(f, "/waterfall/upper", w.upper, w.cells(), 1, 1, kind);
+  write_digested(f, "/waterfall/step", w.step, w.cells(), kResultDigest);
+  write_digested(f, "/waterfall/mine", w.mine, w.cells(), kResultDigest);
+  write_digested(f, "/waterfall/lower", w.lower, w.cells(), kResultDigest);
+  write_digested(f, "/waterfall/upper", w.upper, w.cells(), kResultDigest);
 }
 
 // The waterfall of n steps and k mines from its cells (format 3), checked: equal
@@ -206,10 +205,9 @@ void read_waterfall_cells(const H5File& f, std::size_t n, std::size_t k, Waterfa
 
 void record_inputs(SolveResult& r, const Mission& mission, std::string navigation) {
   r.format_version = kResultFormat;  // the kind of the digests recorded, and the file's layout
-  const DigestKind kind = result_digest_kind(r.format_version);
-  r.navigation_digest = navigation.empty() ? navigation_digest(mission, kind) : std::move(navigation);
-  r.bounds_digest = bounds_digest(mission.model, kind);
-  r.marks_digest = marks_digest(mission, r.solution.mark_count(), kind);
+  r.navigation_digest = navigation.empty() ? navigation_digest(mission, kResultDigest) : std::move(navigation);
+  r.bounds_digest = bounds_digest(mission.model, kResultDigest);
+  r.marks_digest = marks_digest(mission, r.solution.mark_count(), kResultDigest);
   r.version = std::string(version());
   r.epoch = mission.epoch;
   r.origin = mission.origin;
@@ -222,18 +220,17 @@ void write_result(const SolveResult& r, const std::string& path) {
   if (r.format_version != kResultFormat)
     throw FormatError(path + ": the result's input digests are those of format " + std::to_string(r.format_version) +
                       " (record_inputs() records today's)");
-  const DigestKind kind = result_digest_kind(kResultFormat);
   const MissionSolution& s = r.solution;
   AtomicOutput out(path);
   {
     H5File f = H5File::create(out.temp_path(), out.final_path());
     const TubeDomains& d = s.domains;
     const std::size_t n = d.size();
-    write_digested(f, "/time", s.time, s.time.size(), 1, 1, kind);
+    write_digested(f, "/time", s.time, s.time.size(), kResultDigest);
     const std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
-    write_bounds(f, "/tube", tube, n, kind);
+    write_bounds(f, "/tube", tube, n);
     const std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
-    write_bounds(f, "/increments", increments, d.dx.size(), kind);
+    write_bounds(f, "/increments", increments, d.dx.size());
     std::vector<Interval> mx, my, mz;
     for (const Vec3I& m : d.mines) {
       mx.push_back(m[0]);
@@ -241,23 +238,23 @@ void write_result(const SolveResult& r, const std::string& path) {
       mz.push_back(m[2]);
     }
     const std::vector<Interval>* mines[3] = {&mx, &my, &mz};
-    write_bounds(f, "/mines", mines, d.mines.size(), kind);
+    write_bounds(f, "/mines", mines, d.mines.size());
     const std::size_t k = static_cast<std::size_t>(s.mine_count);
-    write_waterfall_cells(f, s.waterfall, n, k, path, kind);
+    write_waterfall_cells(f, s.waterfall, n, k, path);
     std::vector<std::int32_t> candidates(s.candidates.size() * k);
     for (std::size_t j = 0; j < s.candidates.size(); ++j)
       for (std::size_t i = 0; i < k; ++i) candidates[j * k + i] = static_cast<std::int32_t>(s.candidates[j] >> i & 1);
-    write_digested(f, "/marks/candidates", candidates, s.candidates.size(), k, 2, kind);
-    write_digested(f, "/marks/outlier", s.mark_outlier, s.mark_outlier.size(), 1, 1, kind);
-    write_digested(f, "/marks/time", s.mark_time, s.mark_time.size(), 1, 1, kind);
-    write_digested(f, "/marks/range", s.mark_range, s.mark_range.size(), 1, 1, kind);
-    write_digested(f, "/marks/mine", s.mark_mine, s.mark_mine.size(), 1, 1, kind);
-    write_digested(f, "/marks/side", s.mark_side, s.mark_side.size(), 1, 1, kind);
-    write_digested(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size(), 1, 1, kind);
+    write_digested(f, "/marks/candidates", candidates, s.candidates.size(), kResultDigest, k, 2);
+    write_digested(f, "/marks/outlier", s.mark_outlier, s.mark_outlier.size(), kResultDigest);
+    write_digested(f, "/marks/time", s.mark_time, s.mark_time.size(), kResultDigest);
+    write_digested(f, "/marks/range", s.mark_range, s.mark_range.size(), kResultDigest);
+    write_digested(f, "/marks/mine", s.mark_mine, s.mark_mine.size(), kResultDigest);
+    write_digested(f, "/marks/side", s.mark_side, s.mark_side.size(), kResultDigest);
+    write_digested(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size(), kResultDigest);
     write_format(f, kFormat, kVersions);
     write_model_attributes(f, "/model", s.model);
     const std::vector<std::pair<std::string, std::string>> fields = root_fields(r, kResultFormat);
-    const std::string digest = digest_name(kind);
+    const std::string digest = digest_name(kResultDigest);
     f.set_attribute("/", "status", std::string(s.report.consistent ? "consistent" : "inconsistent"));
     f.set_attribute("/", "mode", std::string(solve_mode_name(s.report.mode)));
     f.set_attribute("/", "inconsistency", s.report.message);
@@ -265,7 +262,7 @@ void write_result(const SolveResult& r, const std::string& path) {
     f.set_attribute("/", "converged", std::int64_t{s.report.converged});
     f.set_attribute("/", "minimal_outliers", std::int64_t{s.report.minimal_outliers});
     f.set_attribute("/", "mine_count", static_cast<std::int64_t>(s.mine_count));
-    const InputDigestNames inputs = input_digest_names(kind);
+    const InputDigestNames inputs = input_digest_names(kResultDigest);
     f.set_attribute("/", inputs.navigation, r.navigation_digest);
     f.set_attribute("/", inputs.bounds, r.bounds_digest);
     f.set_attribute("/", inputs.marks, r.marks_digest);
@@ -276,7 +273,7 @@ void write_result(const SolveResult& r, const std::string& path) {
     for (const auto& [name, ms] : s.timings_ms) f.set_attribute("/", "timing_" + name + "_ms", ms);
     std::vector<std::pair<std::string, std::string>> digested = fields;
     for (const char* dataset : kDatasets) digested.emplace_back(dataset, *f.string_attribute(dataset, digest));
-    f.set_attribute("/", digest, digest_of_fields(digested, kind));
+    f.set_attribute("/", digest, digest_of_fields(digested, kResultDigest));
     // Informative, outside the digests: how the file was made, and its units.
     write_provenance(f, "trajectory");
     write_units(f, kResultUnits);

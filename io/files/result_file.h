@@ -28,6 +28,8 @@ inline constexpr std::int64_t kResultFormat = 6;
 constexpr DigestKind result_digest_kind(std::int64_t format_version) {
   return format_version >= 6 ? DigestKind::xxh128 : DigestKind::sha256;
 }
+/// The digests results are written with, and the mission fingerprints they store.
+inline constexpr DigestKind kResultDigest = result_digest_kind(kResultFormat);
 
 /// A result file: the solution and what proves which inputs it was computed from.
 struct SolveResult {

@@ -9,7 +9,7 @@
 namespace gesmi::io {
 
 MissionSolution read_warm_start(const std::string& path, const Mission& mission) {
-  return read_warm_start(path, mission, navigation_digest(mission, result_digest_kind(kResultFormat)));
+  return read_warm_start(path, mission, navigation_digest(mission, kResultDigest));
 }
 
 MissionSolution read_warm_start(const std::string& path, const Mission& mission, std::string navigation) {
@@ -24,7 +24,7 @@ MissionSolution read_warm_start(const std::string& path, const Mission& mission,
   // A result of format 2 to 5 holds SHA-256 fingerprints: the mission's are computed
   // again of that kind.
   const DigestKind kind = result_digest_kind(previous.format_version);
-  if (kind != result_digest_kind(kResultFormat)) navigation = navigation_digest(mission, kind);
+  if (kind != kResultDigest) navigation = navigation_digest(mission, kind);
   if (previous.navigation_digest != navigation)
     refuse("the navigation data (DVL, attitude, depth, altitude, GPS) differ from the mission it was computed on; run a cold solve");
   if (previous.bounds_digest != bounds_digest(mission.model, kind))

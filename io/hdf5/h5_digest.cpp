@@ -41,11 +41,11 @@ std::string verify(const H5File& f, const std::string& dataset, std::span<const 
 }  // namespace
 
 std::string write_digested(H5File& f, const std::string& dataset, std::span<const double> values, std::size_t rows,
-                           std::size_t columns, int rank, DigestKind kind) {
+                           DigestKind kind, std::size_t columns, int rank) {
   return write_with_digest(f, dataset, values, rows, columns, rank, kind);
 }
 std::string write_digested(H5File& f, const std::string& dataset, std::span<const std::int32_t> values,
-                           std::size_t rows, std::size_t columns, int rank, DigestKind kind) {
+                           std::size_t rows, DigestKind kind, std::size_t columns, int rank) {
   return write_with_digest(f, dataset, values, rows, columns, rank, kind);
 }
 std::string verify_digest(const H5File& f, const std::string& dataset, std::span<const double> values,

@@ -19,9 +19,9 @@ namespace gesmi::io {
 
 /// Writes a dataset (as H5File::write) and its digest attribute; returns the digest.
 std::string write_digested(H5File& file, const std::string& dataset, std::span<const double> values, std::size_t rows,
-                           std::size_t columns, int rank, DigestKind kind);
+                           DigestKind kind, std::size_t columns = 1, int rank = 1);
 std::string write_digested(H5File& file, const std::string& dataset, std::span<const std::int32_t> values,
-                           std::size_t rows, std::size_t columns, int rank, DigestKind kind);
+                           std::size_t rows, DigestKind kind, std::size_t columns = 1, int rank = 1);
 
 /// Checks values read from `dataset` (rows x columns) against its digest attribute of
 /// that kind; FormatError naming the file and dataset when it is missing or differs.

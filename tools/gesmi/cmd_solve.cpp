@@ -60,7 +60,7 @@ int run_solve(std::span<const std::string> args) {
     if (const std::string why = io::geodetic_problem(mission.origin); !why.empty())
       throw UsageError("--geojson: " + mission_path + ": " + why);
   // Hashed once: the warm start compares it, the result stores it.
-  const std::string navigation = io::navigation_digest(mission, io::result_digest_kind(io::kResultFormat));
+  const std::string navigation = io::navigation_digest(mission, io::kResultDigest);
   MissionSolution previous;
   if (v.count("from")) {
     progress.update(-1.0, "reading " + v["from"].as<std::string>());
