@@ -78,8 +78,8 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
 }
 
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
-                             const FrameMargins& frame) {
-  const SensorBoxes boxes(mission, model, frame);
+                             const FrameMargins& frame, const DvlExcerpt* dvl) {
+  const SensorBoxes boxes(mission, model, frame, dvl);
   MissionNetwork net;
   net.time = mission.time;
   net.mine_count = mission.mine_count;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace gesmi {
 
@@ -28,22 +30,23 @@ Vec3I SensorBoxes::velocity(std::size_t k) const {
   // the box's largest |vx| + |vy| + |vz| on every component, since the frame's
   // distortion turns a velocity's error off its own axis (docs/model.md, "The local
   // frame's scale").
-  const std::vector<double>* readings[3] = {&m_.vx, &m_.vy, &m_.vz};
-  const std::vector<double>* widths[3] = {&m_.half_widths.vx, &m_.half_widths.vy, &m_.half_widths.vz};
+  const DvlSample s = dvl_ ? dvl_->at(k) : DvlSample::of(m_, k);
   double own[3], largest = 0.0;
   for (int i = 0; i < 3; ++i) {
-    const double v = std::fabs((*readings[i])[k]);
-    own[i] = widths[i]->empty() ? add_up(mul_up(model_.dvl_relative, v), model_.dvl_absolute) : (*widths[i])[k];
+    const double v = std::fabs(s.reading[i]);
+    own[i] = s.given[i] ? s.half_width[i] : add_up(mul_up(model_.dvl_relative, v), model_.dvl_absolute);
     largest = add_up(largest, add_up(v, own[i]));
   }
   const double frame = mul_up(frame_scale(k), largest);
-  return Vec3I(Interval::around(m_.vx[k], add_up(own[0], frame)), Interval::around(m_.vy[k], add_up(own[1], frame)),
-               Interval::around(m_.vz[k], add_up(own[2], frame)));
+  return Vec3I(Interval::around(s.reading[0], add_up(own[0], frame)),
+               Interval::around(s.reading[1], add_up(own[1], frame)),
+               Interval::around(s.reading[2], add_up(own[2], frame)));
 }
 
 double SensorBoxes::frame_scale(std::size_t k) const { return add_up(m_.depth_scale_margin, frame_.scale.at(k)); }
 
 Interval SensorBoxes::depth(std::size_t k) const {
+  if (k >= m_.depth.size()) throw std::logic_error("the depth reading of sample " + std::to_string(k) + " was released");
   const double bound = depth_bound(model_, m_.depth[k]);
   return reading(m_.depth, m_.half_widths.depth, k, bound);
 }

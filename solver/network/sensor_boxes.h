@@ -12,6 +12,7 @@
 #include "solver/interval/box.h"
 #include "solver/mission/mission.h"
 #include "solver/model/euler.h"
+#include "solver/network/dvl_excerpt.h"
 #include "solver/network/frame_margins.h"
 
 namespace gesmi {
@@ -27,9 +28,12 @@ class SensorBoxes {
   /// The mission must outlive this object (it reads the mission's arrays), and so must
   /// the frame's per-sample margins. The heading boxes grow by the frame's heading
   /// margin and the DVL boxes by its scale (the mission's zone-wide ones by default).
+  /// With `dvl`, the DVL readings come from it (which must outlive this object), not
+  /// from the mission, which may have released them (DvlExcerpt).
   SensorBoxes(const Mission& mission, const SensorModel& model) : SensorBoxes(mission, model, zone_frame(mission)) {}
-  SensorBoxes(const Mission& mission, const SensorModel& model, const FrameMargins& frame)
-      : m_(mission), model_(model), frame_(frame) {}
+  SensorBoxes(const Mission& mission, const SensorModel& model, const FrameMargins& frame,
+              const DvlExcerpt* dvl = nullptr)
+      : m_(mission), model_(model), frame_(frame), dvl_(dvl) {}
 
   Interval roll(std::size_t k) const;
   Interval pitch(std::size_t k) const;
@@ -96,6 +100,7 @@ class SensorBoxes {
   const Mission& m_;
   SensorModel model_;
   FrameMargins frame_;
+  const DvlExcerpt* dvl_;
 };
 
 }  // namespace gesmi

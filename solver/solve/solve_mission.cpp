@@ -1,6 +1,8 @@
 #include "solver/solve/solve_mission.h"
 
 #include <chrono>
+#include <optional>
+#include <stdexcept>
 
 #include "solver/network/frame_margins.h"
 #include "solver/network/inconsistency_text.h"
@@ -44,11 +46,40 @@ std::vector<ConstraintRef> diagnose(const MissionNetwork& net, const TubeDomains
 }
 
 // What every mode reads besides the mission: its GPS fixes, and the speed bound the
-// frame's margins take (frame_margins.h; computed once per solve).
+// frame's margins take (frame_margins.h; computed once per solve). When the caller
+// gave up the DVL and depth readings (MissionReadings): the mission to release them
+// from, and the DVL samples the networks still read (at the fixes' and marks' times).
 struct SolveInputs {
   std::vector<PositionFix> fixes;
   double max_speed = 0.0;
+  Mission* releasable = nullptr;
+  std::optional<DvlExcerpt> dvl;
 };
+
+SolveInputs solve_inputs(const Mission& mission, Mission* releasable) {
+  SolveInputs in{gps_fixes(mission), has_frame_margins(mission) ? speed_bound(mission) : 0.0, releasable, {}};
+  if (releasable) {
+    std::vector<double> times = mission.mark_time;
+    for (const PositionFix& fix : in.fixes) times.push_back(fix.time);
+    in.dvl.emplace(mission, times);
+  }
+  return in;
+}
+
+MissionNetwork network_in(const Mission& mission, const SolveInputs& in, const FrameMargins& frame) {
+  return build_network(mission, mission.model, in.fixes, frame, in.dvl ? &*in.dvl : nullptr);
+}
+
+// Empties the readings that only the sensor enclosures read (and speed_bound(), done
+// before; the networks read the DVL excerpt), once they are built, if the caller gave
+// them up.
+void release_sensor_readings(const SolveInputs& in) {
+  if (!in.releasable) return;
+  Mission& m = *in.releasable;
+  NavHalfWidths& h = m.half_widths;
+  for (std::vector<double>* v : {&m.vx, &m.vy, &m.vz, &m.depth, &h.vx, &h.vy, &h.vz, &h.depth})
+    std::vector<double>().swap(*v);  // (clear() would keep the memory)
+}
 
 // Builds the network and the sensor domains under a frame, the time counted as "build".
 struct Pass {
@@ -59,16 +90,30 @@ struct Pass {
 Pass build_pass(const Mission& mission, const SolveInputs& in, const SensorPriors& priors, const FrameMargins& frame,
                 MissionSolution& s) {
   const auto start = Clock::now();
-  Pass pass{build_network(mission, mission.model, in.fixes, frame), sensor_domains_in(priors, frame)};
+  Pass pass{network_in(mission, in, frame), sensor_domains_in(priors, frame)};
   s.timings_ms["build"] += elapsed_ms(start);
   return pass;
 }
 
-SensorPriors build_priors(const Mission& mission, MissionSolution& s) {
+SensorPriors build_priors(const Mission& mission, const SolveInputs& in, MissionSolution& s) {
   const auto start = Clock::now();
   SensorPriors priors = frameless_sensor_priors(mission, mission.model);
+  release_sensor_readings(in);
   s.timings_ms["build"] += elapsed_ms(start);
   return priors;
+}
+
+// The diagnosis of an inconsistent cold solve: which single mark or fix is wrong.
+// Margins from the fixes, or over a tube that trusted every datum, would presume the
+// answer, so it takes the zone's (sound whichever datum is wrong); and the priors are
+// built again (a first pass took their vertical part, a second released them).
+void diagnose_cold(const Mission& mission, const std::vector<PositionFix>& fixes, const SolverOptions& options,
+                   MissionSolution& s) {
+  const auto start = Clock::now();
+  const SensorPriors priors = frameless_sensor_priors(mission, mission.model);
+  const FrameMargins zone = zone_frame(mission);
+  s.report.explained_by = diagnose(build_network(mission, mission.model, fixes, zone), sensor_domains_in(priors, zone), options);
+  s.timings_ms["diagnose"] = elapsed_ms(start);
 }
 
 // The first pass's margins: at the farthest the fixes let the robot be when they are
@@ -95,12 +140,12 @@ bool narrow_frame(const Mission& mission, const SolveInputs& in, const TubeDomai
 
 void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOptions& options, MissionSolution& s,
                 MissionNetwork& net) {
-  SensorPriors priors = build_priors(mission, s);
+  SensorPriors priors = build_priors(mission, in, s);
   FrameMarginValues margins;  // the first pass's, then the second's
   FrameMargins frame = first_frame(mission, in, true, margins);
   auto start = Clock::now();
   // The depth boxes and vertical increments move from the priors into the domains.
-  net = build_network(mission, mission.model, in.fixes, frame);
+  net = network_in(mission, in, frame);
   s.domains = take_sensor_domains(priors, frame);
   add_network_priors(s.domains, net);
   // The network and the domains hold the first pass's margins now: not kept in memory
@@ -116,7 +161,7 @@ void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOption
     // The first pass's enclosure holds under its looser frame: narrowed in place (no
     // copy of the domains) by the sensor domains and network priors under this one.
     start = Clock::now();
-    net = build_network(mission, mission.model, in.fixes, frame);
+    net = network_in(mission, in, frame);
     narrow_to_frame(s.domains, priors, frame);
     intersect_network_priors(s.domains, net);
     // Neither the priors nor the margins are kept in memory during the second
@@ -131,16 +176,11 @@ void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOption
     s.report.sweeps += first_sweeps;
   }
   if (s.report.consistent || !options.diagnose) return;
-  start = Clock::now();
-  // Built again: the first pass took their vertical part (and a second pass released them).
-  priors = frameless_sensor_priors(mission, mission.model);
-  // The diagnosis asks which single mark or fix is wrong: margins from the fixes, or
-  // over a tube that trusted every datum, would presume the answer, so it takes the
-  // zone's (sound whichever datum is wrong).
-  const FrameMargins zone = zone_frame(mission);
-  s.report.explained_by =
-      diagnose(build_network(mission, mission.model, in.fixes, zone), sensor_domains_in(priors, zone), options.propagation);
-  s.timings_ms["diagnose"] = elapsed_ms(start);
+  priors = {};
+  if (in.releasable)
+    s.report.diagnosis_pending = true;  // (its readings are gone: diagnose_inconsistency())
+  else
+    diagnose_cold(mission, in.fixes, options.propagation, s);
 }
 
 void solve_outliers(const Mission& mission, const SolveInputs& in, const SolveOptions& options, MissionSolution& s,
@@ -150,7 +190,7 @@ void solve_outliers(const Mission& mission, const SolveInputs& in, const SolveOp
   o.mode = options.outlier_mode;
   o.trust_fixes = options.trust_gps;
   o.solver = options.propagation;
-  const SensorPriors priors = build_priors(mission, s);
+  const SensorPriors priors = build_priors(mission, in, s);
   FrameMarginValues margins;  // the first pass's, then the second's
   FrameMargins frame = first_frame(mission, in, options.trust_gps, margins);
   Pass pass = build_pass(mission, in, priors, frame, s);
@@ -193,7 +233,7 @@ void solve_warm(const Mission& mission, const SolveInputs& in, const SolveOption
     // The previous tube holds the truth: the added marks take the margins over it.
     const auto start = Clock::now();
     const FrameMarginValues margins = frame_margins_over(mission, previous.domains, in.max_speed);
-    net = build_network(mission, mission.model, in.fixes, margins.view(mission));
+    net = network_in(mission, in, margins.view(mission));
     s.report.beyond_frame_zone = margins.beyond_zone;
     s.timings_ms["build"] += elapsed_ms(start);
     warm = detail::warm_domains(mission, net, previous, why);
@@ -204,6 +244,7 @@ void solve_warm(const Mission& mission, const SolveInputs& in, const SolveOption
     solve_cold(mission, in, options, s, net);
     return;
   }
+  release_sensor_readings(in);  // (a warm rerun builds no sensor enclosures)
   s.report.mode = SolveMode::warm;
   s.domains = std::move(warm->domains);
   const auto start = Clock::now();
@@ -223,27 +264,8 @@ std::string wording(const SolveReport& report, const SolveOptions& options, cons
   return text;
 }
 
-}  // namespace
-
-const char* solve_mode_name(SolveMode mode) {
-  switch (mode) {
-    case SolveMode::cold: return "cold";
-    case SolveMode::warm: return "warm";
-    case SolveMode::outliers: return "outliers";
-    case SolveMode::minimal_outliers: return "minimal-outliers";
-  }
-  return "cold";
-}
-
-std::string SolveOptions::validate() const {
-  if (const std::string why = propagation.validate(); !why.empty()) return why;
-  if (max_outliers > 8) return "at most 8 outliers can be tolerated";
-  if (warm_from && max_outliers >= 0) return "a warm rerun cannot also tolerate outliers";
-  if (trust_gps && max_outliers < 0) return "trusting the GPS fixes only means something when tolerating outliers";
-  return {};
-}
-
-MissionSolution solve_mission(const Mission& mission, const SolveOptions& options) {
+// Every mode's solve; `releasable`: see MissionReadings.
+MissionSolution solve(const Mission& mission, const SolveOptions& options, Mission* releasable) {
   MissionSolution s;
   s.mark_time = mission.mark_time;
   s.mark_range = mission.mark_range;
@@ -259,7 +281,7 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
   };
   stage("sensor enclosures", -1.0);
   auto start = Clock::now();
-  SolveInputs in{gps_fixes(mission), has_frame_margins(mission) ? speed_bound(mission) : 0.0};
+  const SolveInputs in = solve_inputs(mission, releasable);
   MissionNetwork net;
   s.timings_ms["build"] = elapsed_ms(start);
   if (options.warm_from)
@@ -287,6 +309,43 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
     s.timings_ms["waterfall"] = elapsed_ms(start);
   }
   return s;
+}
+
+}  // namespace
+
+const char* solve_mode_name(SolveMode mode) {
+  switch (mode) {
+    case SolveMode::cold: return "cold";
+    case SolveMode::warm: return "warm";
+    case SolveMode::outliers: return "outliers";
+    case SolveMode::minimal_outliers: return "minimal-outliers";
+  }
+  return "cold";
+}
+
+std::string SolveOptions::validate() const {
+  if (const std::string why = propagation.validate(); !why.empty()) return why;
+  if (max_outliers > 8) return "at most 8 outliers can be tolerated";
+  if (warm_from && max_outliers >= 0) return "a warm rerun cannot also tolerate outliers";
+  if (trust_gps && max_outliers < 0) return "trusting the GPS fixes only means something when tolerating outliers";
+  return {};
+}
+
+MissionSolution solve_mission(const Mission& mission, const SolveOptions& options) {
+  return solve(mission, options, nullptr);
+}
+
+MissionSolution solve_mission(Mission& mission, const SolveOptions& options, MissionReadings readings) {
+  return solve(mission, options, readings == MissionReadings::released_after_use ? &mission : nullptr);
+}
+
+void diagnose_inconsistency(const Mission& mission, const SolveOptions& options, MissionSolution& s) {
+  if (!s.report.diagnosis_pending) return;
+  if (mission.depth.size() != mission.size() || mission.vx.size() != mission.size())
+    throw std::invalid_argument("diagnose_inconsistency: the mission's DVL and depth readings were released; read it again");
+  diagnose_cold(mission, gps_fixes(mission), options.propagation, s);
+  s.report.diagnosis_pending = false;
+  s.report.message += describe_diagnosis(*s.report.explained_by);
 }
 
 }  // namespace gesmi

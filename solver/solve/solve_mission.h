@@ -44,6 +44,23 @@ struct SolveOptions {
 
 MissionSolution solve_mission(const Mission& mission, const SolveOptions& options = {});
 
+/// What the solve may do with the mission's readings.
+enum class MissionReadings {
+  kept,
+  /// The DVL and depth readings (vx, vy, vz, depth and their half-widths: 32 bytes a
+  /// step) are emptied once the sensor enclosures are built, so that the passes do not
+  /// hold them: for a caller done with them (gesmi solve; its peak memory). A cold
+  /// inconsistent solve is then not diagnosed (report.diagnosis_pending): the caller
+  /// completes it with diagnose_inconsistency() on the mission read again.
+  released_after_use,
+};
+MissionSolution solve_mission(Mission& mission, const SolveOptions& options, MissionReadings readings);
+
+/// The diagnosis of a solve left pending (report.diagnosis_pending) on `mission` with
+/// all its readings: the single marks or fixes whose removal restores consistency,
+/// added to the report and its message as solve_mission(const Mission&) gives them.
+void diagnose_inconsistency(const Mission& mission, const SolveOptions& options, MissionSolution& s);
+
 /// Why `previous` cannot warm-start a solve of `mission` (another grid, other mines,
 /// an inconsistent result, a mark table that changed other than by added rows), or
 /// empty when it can.

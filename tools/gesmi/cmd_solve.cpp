@@ -8,6 +8,7 @@
 
 #include "io/files/mission_digest.h"
 #include "io/files/mission_file.h"
+#include "io/format_error.h"
 #include "io/output/output_set.h"
 #include "io/files/solve_outputs.h"
 #include "io/exports/result_exports.h"
@@ -51,10 +52,14 @@ int run_solve(std::span<const std::string> args) {
   Progress progress("gesmi solve:");
   progress.update(-1.0, "reading " + mission_path);
   auto start = Clock::now();
+  const auto read_configured = [&](io::TruthReading truth) {
+    Mission m = io::read_mission(mission_path, truth);
+    apply_config(v, m, "solve");
+    apply_mine_count(v, m);
+    return m;
+  };
   // The solve never looks at the truth; only the envelope picture draws it.
-  Mission mission = io::read_mission(mission_path, siblings.envelope_png ? io::TruthReading::read : io::TruthReading::skip);
-  apply_config(v, mission, "solve");
-  apply_mine_count(v, mission);
+  Mission mission = read_configured(siblings.envelope_png ? io::TruthReading::read : io::TruthReading::skip);
   // Before the solve, not after it: a GeoJSON needs latitudes/longitudes the origin allows.
   if (siblings.geojson)
     if (const std::string why = io::geodetic_problem(mission.origin); !why.empty())
@@ -75,7 +80,18 @@ int run_solve(std::span<const std::string> args) {
   };
   options.on_stage = [&](const char* stage, double fraction) { progress.update(fraction, stage); };
   io::SolveResult result;
-  result.solution = solve_mission(mission, options);
+  // Nothing after the sensor enclosures reads the DVL and depth readings: released
+  // then (the solve's peak memory), and read again only to diagnose an inconsistency.
+  result.solution = solve_mission(mission, options, MissionReadings::released_after_use);
+  if (result.solution.report.diagnosis_pending) {
+    progress.update(-1.0, "reading " + mission_path + " again to diagnose the inconsistency");
+    start = Clock::now();
+    const Mission again = read_configured(io::TruthReading::skip);
+    if (io::navigation_digest(again, io::kResultDigest) != navigation)
+      throw io::FormatError(mission_path + ": changed while gesmi solve ran; solve it again");
+    timings["load"] += elapsed_ms(start);
+    diagnose_inconsistency(again, options, result.solution);
+  }
   progress.update(-1.0, "writing " + output);
   const MissionSolution& s = result.solution;
   timings.insert(s.timings_ms.begin(), s.timings_ms.end());
