@@ -91,7 +91,7 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
   priors.dz.resize(steps);
   priors.turn_north.resize(steps);
   priors.turn_east.resize(steps);
-  for (std::size_t k = 0; k < n; ++k) priors.depth[k] = boxes.depth(k);
+  depth_boxes(mission, model, priors.depth.data());
   if (n == 0) return priors;
   // Steps in chunks, one per core; each chunk keeps its own apart hulls, joined in step
   // order afterwards.

@@ -204,7 +204,25 @@ void resize(WorldVelocityBoxes& w, std::size_t n) {
   }
 }
 
+// x ± r per sample: the upper bound x + r rounded up, the lower -(r - x) rounded up.
+// Zeros are signed as sub_down() signs them (round to nearest, then a step down): an
+// exact cancellation is +0, hence 0 - (r - x); and x - 0 is x itself, -0 included.
+[[gnu::noinline]] void depth_block(const double* depth, const double* given, std::size_t n, double absolute,
+                                   double relative, Interval* out) {
+  const UpwardRounding upward;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double x = depth[k], r = given ? given[k] : absolute + relative * std::fabs(x);
+    out[k] = Interval(r == 0.0 ? x - r : 0.0 - (r - x), x + r);
+  }
+}
+
 }  // namespace
+
+void depth_boxes(const Mission& mission, const SensorModel& model, Interval* out) {
+  const std::vector<double>& given = mission.half_widths.depth;
+  depth_block(mission.depth.data(), given.empty() ? nullptr : given.data(), mission.size(), model.depth_absolute,
+              model.depth_relative, out);
+}
 
 void world_velocity_boxes(const Mission& mission, const SensorModel& model, std::size_t first, std::size_t last,
                           WorldVelocityBoxes& out) {

@@ -49,4 +49,10 @@ struct StepIncrementArrays {
 std::vector<std::size_t> kernel_step_increments(const Mission& mission, const SensorModel& model, std::size_t first,
                                                 std::size_t last, const StepIncrementArrays& out);
 
+/// The depth box of every sample, bit for bit SensorBoxes::depth's (the same correctly
+/// rounded bounds, from the upward rounding mode instead of software rounding): the
+/// reading ± the sample's own half-width, or ± (depth_absolute + depth_relative |depth|).
+/// `out` holds mission.size() boxes.
+void depth_boxes(const Mission& mission, const SensorModel& model, Interval* out);
+
 }  // namespace gesmi

@@ -12,7 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cfenv>
+#include <cstdint>
 #include <cmath>
 #include <random>
 
@@ -168,6 +170,54 @@ TEST(SensorKernel, RestoresTheRoundingMode) {
   EXPECT_EQ(std::fegetround(), FE_TONEAREST);
   frameless_sensor_priors(m, m.model);
   EXPECT_EQ(std::fegetround(), FE_TONEAREST);
+}
+
+bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+// The depth boxes in the upward rounding mode against SensorBoxes::depth (software
+// rounding, rounding.h: each bound the correctly rounded one), bit for bit, signs of
+// zero included: readings over every magnitude and sign, subnormal and zero, bounds the
+// reading cancels exactly, models with a zero term, and per-sample half-widths.
+TEST(SensorKernel, DepthBoxesAreSensorBoxesBitForBit) {
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), exponent(-1074.0, 1000.0);
+  const auto any_double = [&] { return unit(random) * std::exp2(std::floor(exponent(random))); };
+  std::vector<double> readings = {0.0, -0.0, 1.5, -1.5, 3.0, 0x1p-1074, -0x1p-1074, 0x1p-1022, 1e300, -1e300};
+  for (int i = 0; i < 20000; ++i) readings.push_back(i % 2 ? any_double() : 200.0 * unit(random));
+  struct ModelCase {
+    double absolute, relative;
+  };
+  for (const ModelCase c : {ModelCase{1.5, 0.2}, ModelCase{1.5, 0.0}, ModelCase{0.0, 0.2}, ModelCase{0.0, 0.0},
+                            ModelCase{0.1, 0x1p-60}, ModelCase{1e-310, 1e-3}}) {
+    for (const bool own : {false, true}) {
+      SCOPED_TRACE(::testing::Message() << c.absolute << " " << c.relative << (own ? " own half-widths" : ""));
+      Mission m;
+      m.depth = readings;
+      m.time.resize(m.depth.size());
+      if (own) {
+        m.half_widths.depth.resize(m.depth.size());
+        for (std::size_t k = 0; k < m.depth.size(); ++k)  // a third of them the reading's magnitude: exact zeros
+          m.half_widths.depth[k] = k % 3 == 0 ? std::fabs(m.depth[k]) : std::fabs(any_double());
+      }
+      SensorModel model;
+      model.depth_absolute = c.absolute;
+      model.depth_relative = c.relative;
+      std::vector<Interval> kernel(m.size());
+      depth_boxes(m, model, kernel.data());
+      EXPECT_EQ(std::fegetround(), FE_TONEAREST);
+      const SensorBoxes boxes(m, model);
+      std::size_t differ = 0;
+      for (std::size_t k = 0; k < m.size(); ++k) {
+        const Interval scalar = boxes.depth(k);
+        if (!same_bits(kernel[k].lo(), scalar.lo()) || !same_bits(kernel[k].hi(), scalar.hi())) {
+          if (differ++ < 3)
+            ADD_FAILURE() << "sample " << k << ": depth " << m.depth[k] << ": kernel [" << kernel[k].lo() << ", "
+                          << kernel[k].hi() << "], SensorBoxes [" << scalar.lo() << ", " << scalar.hi() << "]";
+        }
+      }
+      EXPECT_EQ(differ, 0u);
+    }
+  }
 }
 
 }  // namespace
