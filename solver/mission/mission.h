@@ -1,9 +1,12 @@
 #pragma once
 // A mission's measurements as flat arrays on one time grid (structure of arrays).
-// Built and validated by io/ (and by the simulator); solver/ only reads it.
+// Built and validated by io/ (and by the simulator); solver/ only reads it, but for
+// the readings a solve may release when its caller gives them up (MissionReadings,
+// solver/solve/solve_mission.h; readings_released() below).
 //
 // Invariants (checked by io/ before a Mission reaches the solver):
-//  - nav arrays all have the length of `time`, which is strictly increasing;
+//  - nav arrays all have the length of `time`, which is strictly increasing (but the
+//    released ones, empty);
 //  - every value is finite; marks lie within [time.front(), time.back()];
 //  - the optional half-width arrays are empty or have the length of `time`;
 //  - truth arrays are empty or complete.
@@ -133,5 +136,11 @@ struct Mission {
   std::size_t mark_count() const { return mark_time.size(); }
   bool has_truth() const { return !truth_x.empty(); }
 };
+
+/// The readings a solve releases when its caller gives them up (MissionReadings,
+/// solver/solve/solve_mission.h): vx, vy, vz, depth and their per-sample half-widths.
+std::array<std::vector<double>*, 8> released_readings(Mission& mission);
+/// Whether the mission lacks them (released and not put back).
+bool readings_released(const Mission& mission);
 
 }  // namespace gesmi

@@ -107,4 +107,12 @@ std::string SensorModel::validate() const {
   return {};
 }
 
+bool same_sensor_model(const SensorModel& a, const SensorModel& b) {
+  for (const SensorModelField& f : sensor_model_fields())
+    if (a.*f.member != b.*f.member) return false;
+  for (const SensorModelChoice& c : sensor_model_choices())
+    if (c.get(a) != c.get(b)) return false;
+  return true;
+}
+
 }  // namespace gesmi

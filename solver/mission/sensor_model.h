@@ -95,6 +95,8 @@ struct SensorModelChoice {
   bool (*set)(SensorModel&, std::string_view name);  // false when `name` is not one of names
 };
 const std::vector<SensorModelChoice>& sensor_model_choices();
+/// Whether both models have every field and choice alike.
+bool same_sensor_model(const SensorModel& a, const SensorModel& b);
 /// "starboard, port or both": the names, for messages.
 std::string choice_names(const SensorModelChoice& choice);
 

@@ -4,13 +4,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "solver/network/time_location.h"
+
 namespace gesmi {
 
 DvlSample DvlSample::of(const Mission& m, std::size_t k) {
   const std::vector<double>* readings[3] = {&m.vx, &m.vy, &m.vz};
   const std::vector<double>* widths[3] = {&m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz};
   if (k >= m.vx.size() || k >= m.vy.size() || k >= m.vz.size())
-    throw std::logic_error("the DVL reading of sample " + std::to_string(k) + " was released (MissionReadings)");
+    throw std::logic_error("sample " + std::to_string(k) + " has no DVL reading (released by a solve? MissionReadings)");
   DvlSample s;
   for (int i = 0; i < 3; ++i) {
     s.reading[i] = (*readings[i])[k];
@@ -23,8 +25,8 @@ DvlSample DvlSample::of(const Mission& m, std::size_t k) {
 DvlExcerpt::DvlExcerpt(const Mission& mission, std::span<const double> times) {
   const std::vector<double>& grid = mission.time;
   for (const double t : times) {
-    // As TimeLocation::locate finds the step: the first sample at or after t, and the one before.
-    const auto k = static_cast<std::size_t>(std::lower_bound(grid.begin(), grid.end(), t) - grid.begin());
+    // What TimeLocation::locate reads: that sample and the one before.
+    const std::size_t k = TimeLocation::sample_at_or_after(grid, t);
     if (k < grid.size()) index_.push_back(k);
     if (k > 0) index_.push_back(k - 1);
   }

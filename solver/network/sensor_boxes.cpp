@@ -46,7 +46,8 @@ Vec3I SensorBoxes::velocity(std::size_t k) const {
 double SensorBoxes::frame_scale(std::size_t k) const { return add_up(m_.depth_scale_margin, frame_.scale.at(k)); }
 
 Interval SensorBoxes::depth(std::size_t k) const {
-  if (k >= m_.depth.size()) throw std::logic_error("the depth reading of sample " + std::to_string(k) + " was released");
+  if (k >= m_.depth.size())
+    throw std::logic_error("sample " + std::to_string(k) + " has no depth reading (released by a solve? MissionReadings)");
   const double bound = depth_bound(model_, m_.depth[k]);
   return reading(m_.depth, m_.half_widths.depth, k, bound);
 }

@@ -6,11 +6,14 @@
 
 namespace gesmi {
 
+std::size_t TimeLocation::sample_at_or_after(std::span<const double> time, double t) {
+  return static_cast<std::size_t>(std::lower_bound(time.begin(), time.end(), t) - time.begin());
+}
+
 TimeLocation TimeLocation::locate(std::span<const double> time, double t, const SensorBoxes& boxes) {
   TimeLocation at;
-  const auto it = std::lower_bound(time.begin(), time.end(), t);
-  const auto k = static_cast<std::size_t>(it - time.begin());
-  if (it != time.end() && *it == t) {
+  const std::size_t k = sample_at_or_after(time, t);
+  if (k < time.size() && time[k] == t) {
     at.k = k;
     return at;
   }

@@ -72,12 +72,10 @@ MissionNetwork network_in(const Mission& mission, const SolveInputs& in, const F
 
 // Empties the readings that only the sensor enclosures read (and speed_bound(), done
 // before; the networks read the DVL excerpt), once they are built, if the caller gave
-// them up.
-void release_sensor_readings(const SolveInputs& in) {
-  if (!in.releasable) return;
-  Mission& m = *in.releasable;
-  NavHalfWidths& h = m.half_widths;
-  for (std::vector<double>* v : {&m.vx, &m.vy, &m.vz, &m.depth, &h.vx, &h.vy, &h.vz, &h.depth})
+// them up (`releasable`, the mission being solved, else null).
+void release_sensor_readings(Mission* releasable) {
+  if (!releasable) return;
+  for (std::vector<double>* v : released_readings(*releasable))
     std::vector<double>().swap(*v);  // (clear() would keep the memory)
 }
 
@@ -98,7 +96,7 @@ Pass build_pass(const Mission& mission, const SolveInputs& in, const SensorPrior
 SensorPriors build_priors(const Mission& mission, const SolveInputs& in, MissionSolution& s) {
   const auto start = Clock::now();
   SensorPriors priors = frameless_sensor_priors(mission, mission.model);
-  release_sensor_readings(in);
+  release_sensor_readings(in.releasable);
   s.timings_ms["build"] += elapsed_ms(start);
   return priors;
 }
@@ -244,7 +242,8 @@ void solve_warm(const Mission& mission, const SolveInputs& in, const SolveOption
     solve_cold(mission, in, options, s, net);
     return;
   }
-  release_sensor_readings(in);  // (a warm rerun builds no sensor enclosures)
+  // Only now: a fallback to a cold solve builds the sensor enclosures; a warm rerun none.
+  release_sensor_readings(in.releasable);
   s.report.mode = SolveMode::warm;
   s.domains = std::move(warm->domains);
   const auto start = Clock::now();
@@ -265,7 +264,7 @@ std::string wording(const SolveReport& report, const SolveOptions& options, cons
 }
 
 // Every mode's solve; `releasable`: see MissionReadings.
-MissionSolution solve(const Mission& mission, const SolveOptions& options, Mission* releasable) {
+MissionSolution solve_in_mode(const Mission& mission, const SolveOptions& options, Mission* releasable) {
   MissionSolution s;
   s.mark_time = mission.mark_time;
   s.mark_range = mission.mark_range;
@@ -332,17 +331,21 @@ std::string SolveOptions::validate() const {
 }
 
 MissionSolution solve_mission(const Mission& mission, const SolveOptions& options) {
-  return solve(mission, options, nullptr);
+  return solve_in_mode(mission, options, nullptr);
 }
 
 MissionSolution solve_mission(Mission& mission, const SolveOptions& options, MissionReadings readings) {
-  return solve(mission, options, readings == MissionReadings::released_after_use ? &mission : nullptr);
+  return solve_in_mode(mission, options, readings == MissionReadings::released_after_use ? &mission : nullptr);
 }
 
 void diagnose_inconsistency(const Mission& mission, const SolveOptions& options, MissionSolution& s) {
   if (!s.report.diagnosis_pending) return;
-  if (mission.depth.size() != mission.size() || mission.vx.size() != mission.size())
-    throw std::invalid_argument("diagnose_inconsistency: the mission's DVL and depth readings were released; read it again");
+  if (readings_released(mission))
+    throw std::invalid_argument("diagnose_inconsistency: the mission's DVL and depth readings were released; put them back");
+  if (mission.time != s.time || mission.mark_time != s.mark_time || mission.mark_range != s.mark_range ||
+      mission.mark_mine != s.mark_mine || mission.mark_side != s.mark_side || mission.mine_count != s.mine_count ||
+      !same_sensor_model(mission.model, s.model))
+    throw std::invalid_argument("diagnose_inconsistency: not the mission solved (its grid, marks or bounds differ)");
   diagnose_cold(mission, gps_fixes(mission), options.propagation, s);
   s.report.diagnosis_pending = false;
   s.report.message += describe_diagnosis(*s.report.explained_by);

@@ -47,18 +47,20 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
 /// What the solve may do with the mission's readings.
 enum class MissionReadings {
   kept,
-  /// The DVL and depth readings (vx, vy, vz, depth and their half-widths: 32 bytes a
-  /// step) are emptied once the sensor enclosures are built, so that the passes do not
-  /// hold them: for a caller done with them (gesmi solve; its peak memory). A cold
-  /// inconsistent solve is then not diagnosed (report.diagnosis_pending): the caller
-  /// completes it with diagnose_inconsistency() on the mission read again.
+  /// The DVL and depth readings and their per-sample half-widths (released_readings(),
+  /// 32 bytes a step, 64 with half-widths) are emptied once the sensor enclosures are
+  /// built, so that the passes do not hold them; the networks keep the few DVL samples
+  /// they read (DvlExcerpt). For a caller done with them (gesmi solve; its peak
+  /// memory). A cold inconsistent solve is then not diagnosed (report.diagnosis_pending):
+  /// the caller puts the readings back (read again) and calls diagnose_inconsistency().
   released_after_use,
 };
 MissionSolution solve_mission(Mission& mission, const SolveOptions& options, MissionReadings readings);
 
-/// The diagnosis of a solve left pending (report.diagnosis_pending) on `mission` with
-/// all its readings: the single marks or fixes whose removal restores consistency,
-/// added to the report and its message as solve_mission(const Mission&) gives them.
+/// The diagnosis of a solve left pending (report.diagnosis_pending): the single marks
+/// or fixes whose removal restores consistency, added to the report and its message as
+/// solve_mission(const Mission&) gives them. `mission` is the one solved, its readings
+/// put back (std::invalid_argument otherwise, or when its marks or bounds differ).
 void diagnose_inconsistency(const Mission& mission, const SolveOptions& options, MissionSolution& s);
 
 /// Why `previous` cannot warm-start a solve of `mission` (another grid, other mines,

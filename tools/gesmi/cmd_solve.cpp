@@ -31,6 +31,19 @@ using Clock = std::chrono::steady_clock;
 
 double elapsed_ms(Clock::time_point since) { return std::chrono::duration<double, std::milli>(Clock::now() - since).count(); }
 
+// The readings a solve released (MissionReadings), read again from the file into the
+// mission solved, whose marks, bounds and configuration stay as they were: refused if
+// the file's navigation is no longer the one solved.
+void put_back_released_readings(Mission& mission, const std::string& path, const po::variables_map& v,
+                                const std::string& navigation) {
+  Mission again = io::read_mission(path, io::TruthReading::skip);
+  apply_mine_count(v, again);  // (the navigation digest covers the mine count)
+  if (io::navigation_digest(again, io::kResultDigest) != navigation)
+    throw io::FormatError(path + ": changed while gesmi solve ran; solve it again");
+  const auto from = released_readings(again), to = released_readings(mission);
+  for (std::size_t i = 0; i < to.size(); ++i) *to[i] = std::move(*from[i]);
+}
+
 int run_solve(std::span<const std::string> args) {
   po::variables_map v;
   if (!parse_options(args, solve_options(), po::positional_options_description().add("mission", 1), v, kSolveUsage))
@@ -52,14 +65,10 @@ int run_solve(std::span<const std::string> args) {
   Progress progress("gesmi solve:");
   progress.update(-1.0, "reading " + mission_path);
   auto start = Clock::now();
-  const auto read_configured = [&](io::TruthReading truth) {
-    Mission m = io::read_mission(mission_path, truth);
-    apply_config(v, m, "solve");
-    apply_mine_count(v, m);
-    return m;
-  };
   // The solve never looks at the truth; only the envelope picture draws it.
-  Mission mission = read_configured(siblings.envelope_png ? io::TruthReading::read : io::TruthReading::skip);
+  Mission mission = io::read_mission(mission_path, siblings.envelope_png ? io::TruthReading::read : io::TruthReading::skip);
+  apply_config(v, mission, "solve");
+  apply_mine_count(v, mission);
   // Before the solve, not after it: a GeoJSON needs latitudes/longitudes the origin allows.
   if (siblings.geojson)
     if (const std::string why = io::geodetic_problem(mission.origin); !why.empty())
@@ -80,17 +89,16 @@ int run_solve(std::span<const std::string> args) {
   };
   options.on_stage = [&](const char* stage, double fraction) { progress.update(fraction, stage); };
   io::SolveResult result;
-  // Nothing after the sensor enclosures reads the DVL and depth readings: released
-  // then (the solve's peak memory), and read again only to diagnose an inconsistency.
+  // Once the sensor enclosures are built, the solve reads the DVL and depth readings
+  // only at the marks and fixes (kept aside): released then (its peak memory), and read
+  // again only to diagnose an inconsistency.
   result.solution = solve_mission(mission, options, MissionReadings::released_after_use);
   if (result.solution.report.diagnosis_pending) {
     progress.update(-1.0, "reading " + mission_path + " again to diagnose the inconsistency");
     start = Clock::now();
-    const Mission again = read_configured(io::TruthReading::skip);
-    if (io::navigation_digest(again, io::kResultDigest) != navigation)
-      throw io::FormatError(mission_path + ": changed while gesmi solve ran; solve it again");
+    put_back_released_readings(mission, mission_path, v, navigation);
     timings["load"] += elapsed_ms(start);
-    diagnose_inconsistency(again, options, result.solution);
+    diagnose_inconsistency(mission, options, result.solution);
   }
   progress.update(-1.0, "writing " + output);
   const MissionSolution& s = result.solution;

@@ -21,8 +21,19 @@ bool bitwise_equal(const std::vector<Interval>& a, const std::vector<Interval>& 
 }
 
 void expect_same_solution(const MissionSolution& a, const MissionSolution& b) {
-  EXPECT_EQ(a.report.consistent, b.report.consistent);
-  EXPECT_EQ(a.report.sweeps, b.report.sweeps);
+  const SolveReport &r = a.report, &q = b.report;
+  EXPECT_EQ(r.mode, q.mode);
+  EXPECT_EQ(r.consistent, q.consistent);
+  EXPECT_EQ(r.sweeps, q.sweeps);
+  EXPECT_EQ(r.message, q.message);
+  EXPECT_EQ(r.cold_fallback, q.cold_fallback);
+  EXPECT_EQ(r.beyond_frame_zone, q.beyond_frame_zone);
+  EXPECT_EQ(r.minimal_outliers, q.minimal_outliers);
+  EXPECT_EQ(r.hypotheses, q.hypotheses);
+  EXPECT_EQ(r.removal_sets, q.removal_sets);
+  EXPECT_EQ(r.consistent_removal_sets, q.consistent_removal_sets);
+  EXPECT_EQ(a.mark_outlier, b.mark_outlier);
+  EXPECT_EQ(a.gps_outlier, b.gps_outlier);
   for (const auto member : {&TubeDomains::px, &TubeDomains::py, &TubeDomains::pz, &TubeDomains::dx, &TubeDomains::dy,
                             &TubeDomains::dz})
     EXPECT_TRUE(bitwise_equal(a.domains.*member, b.domains.*member));
@@ -88,9 +99,9 @@ Mission mission_with_margins(std::uint64_t seed, int outliers) {
   return m;
 }
 
-void expect_released(const Mission& m) {
-  for (const auto* v : {&m.vx, &m.vy, &m.vz, &m.depth, &m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz,
-                        &m.half_widths.depth}) {
+void expect_released(Mission& m) {
+  EXPECT_TRUE(readings_released(m));
+  for (const std::vector<double>* v : released_readings(m)) {
     EXPECT_TRUE(v->empty());
     EXPECT_EQ(v->capacity(), 0u) << "emptied but its memory kept";
   }
@@ -124,29 +135,45 @@ TEST(DvlExcerpt, HoldsTheSamplesOnBothSidesOfEachTime) {
 }
 
 TEST(ReleasedReadings, TheTestMissionsHaveMarksAndFixesBetweenSamples) {
-  const Mission m = mission_with_margins(5, 0);
-  const MissionNetwork net = build_network(m, m.model, gps_fixes(m));
-  std::size_t marks = 0, fixes = 0;
-  for (const Detection& d : net.detections) marks += d.at.on_grid ? 0 : 1;
-  for (const Anchor& a : net.anchors) fixes += a.at.on_grid ? 0 : 1;
-  EXPECT_GE(marks, 3u);
-  EXPECT_EQ(fixes, 1u);
+  for (const std::uint64_t seed : {5u, 6u, 31u}) {
+    SCOPED_TRACE(seed);
+    const Mission m = mission_with_margins(seed, seed == 31 ? 1 : 0);
+    const MissionNetwork net = build_network(m, m.model, gps_fixes(m));
+    std::size_t marks = 0, fixes = 0;
+    for (const Detection& d : net.detections) marks += d.at.on_grid ? 0 : 1;
+    for (const Anchor& a : net.anchors) fixes += a.at.on_grid ? 0 : 1;
+    EXPECT_GE(marks, 3u);
+    EXPECT_EQ(fixes, 1u);
+  }
 }
 
-TEST(ReleasedReadings, ColdAndOutlierSolvesAreTheSameBitForBit) {
+TEST(ReleasedReadings, ColdSolvesAreTheSameBitForBit) {
   const Mission kept = mission_with_margins(5, 0);
-  for (const int max_outliers : {-1, 1}) {
-    SCOPED_TRACE(max_outliers);
-    SolveOptions options;
-    options.max_outliers = max_outliers;
-    Mission released = kept;
-    const MissionSolution a = solve_mission(kept, options);
-    const MissionSolution b = solve_mission(released, options, MissionReadings::released_after_use);
-    ASSERT_TRUE(a.report.consistent);
-    expect_same_solution(a, b);
-    expect_released(released);
-    EXPECT_FALSE(b.report.diagnosis_pending);
-  }
+  Mission released = kept;
+  const MissionSolution a = solve_mission(kept);
+  const MissionSolution b = solve_mission(released, {}, MissionReadings::released_after_use);
+  ASSERT_TRUE(a.report.consistent);
+  expect_same_solution(a, b);
+  expect_released(released);
+}
+
+// Both outlier modes, on a mission with a wrong mark (q* = 1) and without.
+TEST(ReleasedReadings, OutlierSolvesAreTheSameBitForBit) {
+  for (const int wrong : {0, 1})
+    for (const OutlierMode mode : {OutlierMode::relaxed, OutlierMode::minimal}) {
+      SCOPED_TRACE(::testing::Message() << wrong << " wrong mark, mode " << static_cast<int>(mode));
+      const Mission kept = mission_with_margins(wrong ? 31 : 5, wrong);
+      SolveOptions options;
+      options.max_outliers = 1;
+      options.outlier_mode = mode;
+      Mission released = kept;
+      const MissionSolution a = solve_mission(kept, options);
+      const MissionSolution b = solve_mission(released, options, MissionReadings::released_after_use);
+      ASSERT_TRUE(a.report.consistent);
+      EXPECT_EQ(a.report.minimal_outliers, wrong);
+      expect_same_solution(a, b);
+      expect_released(released);
+    }
 }
 
 TEST(ReleasedReadings, AWarmRerunIsTheSameBitForBit) {
@@ -167,6 +194,17 @@ TEST(ReleasedReadings, AWarmRerunIsTheSameBitForBit) {
   EXPECT_EQ(b.report.mode, SolveMode::warm);
   expect_same_solution(a, b);
   expect_released(released);
+
+  // A rerun the earlier result cannot warm-start (a mark edited) is solved cold.
+  Mission edited = m;
+  edited.mark_range[0] += 0.5;
+  Mission edited_released = edited;
+  const MissionSolution c = solve_mission(edited, warm);
+  const MissionSolution d = solve_mission(edited_released, warm, MissionReadings::released_after_use);
+  ASSERT_EQ(c.report.mode, SolveMode::cold);
+  ASSERT_TRUE(c.report.cold_fallback.has_value());
+  expect_same_solution(c, d);
+  expect_released(edited_released);
 }
 
 TEST(ReleasedReadings, AnInconsistentSolveIsDiagnosedOnTheMissionReadAgain) {
@@ -183,8 +221,20 @@ TEST(ReleasedReadings, AnInconsistentSolveIsDiagnosedOnTheMissionReadAgain) {
   EXPECT_FALSE(b.report.explained_by.has_value());
   expect_released(released);
   EXPECT_THROW(diagnose_inconsistency(released, {}, b), std::invalid_argument);
+  // Readings put back into another mission (a mark edited, other bounds): refused.
+  Mission other = kept;
+  other.mark_range[0] += 1.0;
+  EXPECT_THROW(diagnose_inconsistency(other, {}, b), std::invalid_argument);
+  other = kept;
+  other.model.mark_range *= 2.0;
+  EXPECT_THROW(diagnose_inconsistency(other, {}, b), std::invalid_argument);
+  EXPECT_TRUE(b.report.diagnosis_pending);
 
-  diagnose_inconsistency(kept, {}, b);
+  // The readings put back into the mission solved, as gesmi solve does.
+  const auto from = released_readings(other = kept), to = released_readings(released);
+  for (std::size_t i = 0; i < to.size(); ++i) *to[i] = std::move(*from[i]);
+  EXPECT_FALSE(readings_released(released));
+  diagnose_inconsistency(released, {}, b);
   EXPECT_FALSE(b.report.diagnosis_pending);
   ASSERT_TRUE(b.report.explained_by.has_value());
   EXPECT_EQ(*b.report.explained_by, *a.report.explained_by);
