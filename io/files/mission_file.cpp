@@ -85,6 +85,53 @@ void expect_size(std::size_t size, std::size_t expected, const std::string& sour
     bad(source, dataset, "expected " + std::to_string(expected) + " rows, found " + std::to_string(size));
 }
 
+// The truth's shape against the mission's, and its values.
+void validate_truth(const Mission& m, const std::string& source) {
+  const std::size_t n = m.size(), mk = m.mark_time.size(), g = m.gps_time.size();
+  if (!m.truth_x.empty() || !m.truth_y.empty() || !m.truth_z.empty()) {
+    expect_size(m.truth_x.size(), n, source, "/truth/position");
+    expect_size(m.truth_y.size(), n, source, "/truth/position");
+    expect_size(m.truth_z.size(), n, source, "/truth/position");
+    for (const auto* axis : {&m.truth_x, &m.truth_y, &m.truth_z}) expect_finite(*axis, source, "/truth/position", "position");
+  }
+  if (!m.truth_mines.empty()) {
+    expect_size(m.truth_mines.size(), 3 * static_cast<std::size_t>(m.mine_count), source, "/truth/mines (K x 3)");
+    expect_finite(m.truth_mines, source, "/truth/mines", "position");
+  }
+  if (m.truth_missed_marks.size() % 3 != 0) bad(source, "/truth/missed_marks", "expected X x 3 values");
+  expect_finite(m.truth_missed_marks, source, "/truth/missed_marks", "value");
+  const auto expect_flags = [&](const std::vector<std::int32_t>& flags, std::size_t rows, const char* dataset) {
+    expect_size(flags.size(), rows, source, dataset);
+    for (std::size_t i = 0; i < flags.size(); ++i)
+      if (flags[i] != 0 && flags[i] != 1) bad(source, dataset, row_text(i) + ": expected 0 or 1");
+  };
+  if (!m.truth_marks_outlier.empty()) expect_flags(m.truth_marks_outlier, mk, "/truth/marks_outlier");
+  if (!m.truth_gps_outlier.empty()) expect_flags(m.truth_gps_outlier, g, "/truth/gps_outlier");
+  if (!m.truth_marks_mine.empty()) {
+    expect_size(m.truth_marks_mine.size(), mk, source, "/truth/marks_mine");
+    for (std::size_t j = 0; j < mk; ++j)
+      if (m.truth_marks_mine[j] < -1 || m.truth_marks_mine[j] >= m.mine_count)
+        bad(source, "/truth/marks_mine", row_text(j) + ": not one of the mission's mines");
+  }
+}
+
+// Reads /truth into m, whose navigation and marks are read (their shapes are the truth's).
+void read_truth(const H5File& f, const std::string& path, Mission& m) {
+  if (f.has("/truth/position")) {
+    const H5Shape s = f.shape("/truth/position");
+    if (s.rank != 2 || s.columns != 3 || s.rows != m.size())
+      throw FormatError(path + ": /truth/position: expected " + std::to_string(m.size()) + " x 3, found " +
+                        std::to_string(s.rows) + " x " + std::to_string(s.columns));
+    std::vector<double>* position[3] = {&m.truth_x, &m.truth_y, &m.truth_z};
+    f.read_columns_into("/truth/position", position);
+  }
+  if (f.has("/truth/mines")) m.truth_mines = f.read_doubles("/truth/mines", 2);
+  if (f.has("/truth/missed_marks")) m.truth_missed_marks = f.read_doubles("/truth/missed_marks", 2);
+  if (f.has("/truth/marks_outlier")) m.truth_marks_outlier = f.read_ints("/truth/marks_outlier", 1);
+  if (f.has("/truth/marks_mine")) m.truth_marks_mine = f.read_ints("/truth/marks_mine", 1);
+  if (f.has("/truth/gps_outlier")) m.truth_gps_outlier = f.read_ints("/truth/gps_outlier", 1);
+}
+
 }  // namespace
 
 void validate_mission(const Mission& m, const std::string& source) {
@@ -154,32 +201,7 @@ void validate_mission(const Mission& m, const std::string& source) {
     if (const auto problem = check_mark(rules, m.mark_time[j], m.mark_mine[j], m.mark_range[j], m.mark_side[j]))
       bad(source, std::string("/marks/") + mark_field_name(problem->field), row_text(j) + ": " + problem->reason);
 
-  // Truth.
-  if (!m.truth_x.empty() || !m.truth_y.empty() || !m.truth_z.empty()) {
-    expect_size(m.truth_x.size(), n, source, "/truth/position");
-    expect_size(m.truth_y.size(), n, source, "/truth/position");
-    expect_size(m.truth_z.size(), n, source, "/truth/position");
-    for (const auto* axis : {&m.truth_x, &m.truth_y, &m.truth_z}) expect_finite(*axis, source, "/truth/position", "position");
-  }
-  if (!m.truth_mines.empty()) {
-    expect_size(m.truth_mines.size(), 3 * static_cast<std::size_t>(m.mine_count), source, "/truth/mines (K x 3)");
-    expect_finite(m.truth_mines, source, "/truth/mines", "position");
-  }
-  if (m.truth_missed_marks.size() % 3 != 0) bad(source, "/truth/missed_marks", "expected X x 3 values");
-  expect_finite(m.truth_missed_marks, source, "/truth/missed_marks", "value");
-  const auto expect_flags = [&](const std::vector<std::int32_t>& flags, std::size_t rows, const char* dataset) {
-    expect_size(flags.size(), rows, source, dataset);
-    for (std::size_t i = 0; i < flags.size(); ++i)
-      if (flags[i] != 0 && flags[i] != 1) bad(source, dataset, row_text(i) + ": expected 0 or 1");
-  };
-  if (!m.truth_marks_outlier.empty()) expect_flags(m.truth_marks_outlier, mk, "/truth/marks_outlier");
-  if (!m.truth_gps_outlier.empty()) expect_flags(m.truth_gps_outlier, g, "/truth/gps_outlier");
-  if (!m.truth_marks_mine.empty()) {
-    expect_size(m.truth_marks_mine.size(), mk, source, "/truth/marks_mine");
-    for (std::size_t j = 0; j < mk; ++j)
-      if (m.truth_marks_mine[j] < -1 || m.truth_marks_mine[j] >= m.mine_count)
-        bad(source, "/truth/marks_mine", row_text(j) + ": not one of the mission's mines");
-  }
+  validate_truth(m, source);
 }
 
 Mission read_mission(const std::string& path, TruthReading truth) {
@@ -263,18 +285,26 @@ Mission read_mission(const std::string& path, TruthReading truth) {
     fill_local_gps(m, path);
     return m;
   }
-  if (f.has("/truth/position")) {
-    std::vector<double>* position[3] = {&m.truth_x, &m.truth_y, &m.truth_z};
-    columns("/truth/position", position);
-  }
-  if (f.has("/truth/mines")) m.truth_mines = f.read_doubles("/truth/mines", 2);
-  if (f.has("/truth/missed_marks")) m.truth_missed_marks = f.read_doubles("/truth/missed_marks", 2);
-  if (f.has("/truth/marks_outlier")) m.truth_marks_outlier = f.read_ints("/truth/marks_outlier", 1);
-  if (f.has("/truth/marks_mine")) m.truth_marks_mine = f.read_ints("/truth/marks_mine", 1);
-  if (f.has("/truth/gps_outlier")) m.truth_gps_outlier = f.read_ints("/truth/gps_outlier", 1);
+  read_truth(f, path, m);
   validate_mission(m, path);
   fill_local_gps(m, path);
   return m;
+}
+
+void read_mission_truth(const std::string& path, Mission& m) {
+  if (m.has_truth() || !m.truth_mines.empty()) throw std::logic_error("read_mission_truth: the truth was read already");
+  const H5File f = H5File::open_read(path);
+  check_format(f, kFormat, "gesmi mission", kVersions);
+  try {
+    read_truth(f, path, m);
+    validate_truth(m, path);
+  } catch (...) {  // the mission stays as it was: without truth
+    for (auto* column : {&m.truth_x, &m.truth_y, &m.truth_z, &m.truth_mines, &m.truth_missed_marks})
+      std::vector<double>().swap(*column);
+    for (auto* flags : {&m.truth_marks_outlier, &m.truth_marks_mine, &m.truth_gps_outlier})
+      std::vector<std::int32_t>().swap(*flags);
+    throw;
+  }
 }
 
 void write_mission(const Mission& m, const std::string& path) {

@@ -16,6 +16,11 @@ enum class TruthReading { read, skip };
 
 /// Reads and validates a mission; fills the GPS fixes in the local frame.
 Mission read_mission(const std::string& path, TruthReading truth = TruthReading::read);
+/// Reads the simulated truth (if any) into a mission read with TruthReading::skip from
+/// the same file: a command whose peak memory is its computation reads the truth after
+/// it (gesmi kalman). Checks its shape against the mission's (FormatError naming the
+/// dataset); the mission is unchanged then.
+void read_mission_truth(const std::string& path, Mission& mission);
 /// Writes a mission atomically (temporary name, then rename).
 void write_mission(const Mission& mission, const std::string& path);
 

@@ -14,9 +14,14 @@ ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, double prior_info)
       eta_m_(VecX::Zero(static_cast<Eigen::Index>(q))) {}
 
 void ArrowheadChain::reset() {
+  step_info_.assign(n_ > 0 ? n_ - 1 : 0, Mat3::Zero());  // (released after a last solve)
+  reset_keeping_steps();
+}
+
+void ArrowheadChain::reset_keeping_steps() {
+  if (step_info_.size() + 1 < n_) throw std::logic_error("ArrowheadChain::reset_keeping_steps: the steps were released");
   for (Mat3& x : diag_) x.setZero();
   for (Vec3& x : eta_) x.setZero();
-  step_info_.assign(n_ > 0 ? n_ - 1 : 0, Mat3::Zero());  // (released after a last solve)
   mixed_.clear();
   const auto q = static_cast<Eigen::Index>(q_);
   d_ = MatX::Identity(q, q) * prior_info_;
@@ -36,6 +41,18 @@ void ArrowheadChain::add_step(std::size_t k, const Mat3& w, const Vec3& delta) {
   step_info_[k] += w;
   eta_[k] -= w * delta;
   eta_[k + 1] += w * delta;
+}
+
+void ArrowheadChain::add_steps_again(std::span<const Vec3> delta) {
+  if (delta.size() != step_info_.size()) throw std::invalid_argument("ArrowheadChain::add_steps_again: one delta per step");
+  // add_step's sums in its order, the information being already in step_info_.
+  for (std::size_t k = 0; k < delta.size(); ++k) {
+    const Mat3& w = step_info_[k];
+    diag_[k] += w;
+    diag_[k + 1] += w;
+    eta_[k] -= w * delta[k];
+    eta_[k + 1] += w * delta[k];
+  }
 }
 
 void ArrowheadChain::add_position_row(std::size_t k, const Row3& hp, double z, double w) {

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 #include <map>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -30,6 +31,15 @@ class ArrowheadChain {
   /// the same buffers (at 10^7 steps, reallocating them cost more than the solve). The
   /// solve works in place, so factors are added again only after reset().
   void reset();
+  /// reset() but for the steps' information W_k (add_step), which stays for
+  /// add_steps_again(): an odometry that does not change between linearisations (no
+  /// biases) is computed once.
+  void reset_keeping_steps();
+  /// After reset_keeping_steps(): the steps p_{k+1} - p_k = delta[k] again, with the
+  /// information kept; the same system as add_step(k, W_k, delta[k]) for every k.
+  void add_steps_again(std::span<const Vec3> delta);
+  /// W_k of the step from p_k to p_{k+1}; meaningful until release_workspace().
+  const Mat3& step_information(std::size_t k) const { return step_info_[k]; }
   /// Frees what only solve() needs, once no further solve follows (the means and
   /// covariances stay).
   void release_workspace() { std::vector<Mat3>().swap(step_info_); }

@@ -66,9 +66,10 @@ void linearise_measurements(const Mission& m, const SensorModel& model, std::spa
   };
   // Odometry: p(k+1) - p(k) = dt (R_k v_k + R_{k+1} v_{k+1}) / 2, DVL noise per axis.
   // Each sample's rotation is computed once: the next step's r0 is this step's r1.
-  Mat3d r1 = n > 0 ? rotation(m, 0, heading_bias) : Mat3d::Identity();
+  const bool odometry = o.factors != FactorSet::without_odometry;
+  Mat3d r1 = n > 0 && odometry ? rotation(m, 0, heading_bias) : Mat3d::Identity();
   BiasJacobian jacobian = BiasJacobian::Zero();
-  for (std::size_t k = 0; k + 1 < n; ++k) {
+  for (std::size_t k = 0; k + 1 < n && odometry; ++k) {
     const double dt = m.time[k + 1] - m.time[k];
     const Mat3d r0 = r1;
     r1 = rotation(m, k + 1, heading_bias);
@@ -90,7 +91,7 @@ void linearise_measurements(const Mission& m, const SensorModel& model, std::spa
     }
     sink.odometry(k, cov.inverse(), delta, jacobian);
   }
-  if (o.odometry_only) return;
+  if (o.factors == FactorSet::odometry) return;
   const Eigen::RowVector3d ex(1.0, 0.0, 0.0), ey(0.0, 1.0, 0.0), ez(0.0, 0.0, 1.0), none = Eigen::RowVector3d::Zero();
   // Depth at every step. The bound grows with the depth: evaluated at the reading it
   // would weigh readings that erred deep less than those that erred shallow (a 0.3 m

@@ -62,10 +62,17 @@ class MeasurementSink {
                       const BiasRow& hb, double z, double w, const ConstraintRef* source) = 0;
 };
 
+/// Which factors linearise_measurements() generates.
+enum class FactorSet {
+  all,
+  odometry,          // the odometry steps alone (a dead reckoning)
+  without_odometry,  // the scalar measurements alone (an odometry kept from an earlier pass)
+};
+
 struct MeasurementOptions {
   double noise_factor = 1.0;
   bool biases = false;  // compute the bias terms (zero otherwise)
-  bool odometry_only = false;  // the odometry steps alone (a dead reckoning)
+  FactorSet factors = FactorSet::all;
 };
 
 /// Generates the factors at `lin`; places a mine not yet placed at its first

@@ -64,6 +64,14 @@ std::string KalmanOptions::validate() const {
 KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span<const PositionFix> fixes,
                            const KalmanOptions& o) {
   const std::size_t n = m.size(), k_mines = static_cast<std::size_t>(m.mine_count);
+  const std::size_t q = 3 * k_mines + (o.biases ? kBiasCount : 0);
+  ArrowheadChain chain(n, q);  // one set of buffers for every linearisation
+  // Without biases the odometry does not depend on the linearisation point: the dead
+  // reckoning computes its factors once (the information in the chain, the deltas
+  // here) and every pass adds them again (four fifths of the rotations of a
+  // three-pass smoothing saved).
+  const bool fixed_odometry = !o.biases;
+  std::vector<Vec3d> odometry_delta;
   // First linearisation: dead reckoning from the first fix (or the origin), biases zero.
   KalmanLinearisation lin;
   lin.position.assign(n, Vec3d::Zero());
@@ -74,16 +82,23 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     lin.position[0] = p;
     struct DeadReckoning final : MeasurementSink {
       std::vector<Vec3d>& position;
-      explicit DeadReckoning(std::vector<Vec3d>& p) : position(p) {}
-      void odometry(std::size_t k, const Mat3d&, const Vec3d& delta, const BiasJacobian&) override {
-        position[k + 1] = position[k] + delta;
+      ArrowheadChain* kept_in;  // the chain that keeps the odometry, if it is fixed
+      std::vector<Vec3d>& delta;
+      DeadReckoning(std::vector<Vec3d>& p, ArrowheadChain* chain, std::vector<Vec3d>& d)
+          : position(p), kept_in(chain), delta(d) {}
+      void odometry(std::size_t k, const Mat3d& information, const Vec3d& step, const BiasJacobian&) override {
+        position[k + 1] = position[k] + step;
+        if (!kept_in) return;
+        kept_in->add_step(k, information, step);
+        delta.push_back(step);
       }
       void scalar(std::size_t, const Eigen::RowVector3d&, int, const Eigen::RowVector3d&, const BiasRow&, double, double,
                   const ConstraintRef*) override {}
-    } dead_reckoning(lin.position);
+    } dead_reckoning(lin.position, fixed_odometry ? &chain : nullptr, odometry_delta);
+    if (fixed_odometry) odometry_delta.reserve(n - 1);
     lin.mine.assign(k_mines, Vec3d::Zero());
     lin.mine_known.assign(k_mines, 0);
-    linearise_measurements(m, model, {}, {o.noise_factor, false, true}, lin, dead_reckoning);
+    linearise_measurements(m, model, {}, {o.noise_factor, false, FactorSet::odometry}, lin, dead_reckoning);
   }
   lin.mine.assign(k_mines, Vec3d::Zero());  // placed at their first detection in the first pass
   lin.mine_known.assign(k_mines, 0);
@@ -96,17 +111,22 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
   result.mine_mean.assign(3 * k_mines, nan);  // (a mine never detected stays NaN)
   result.mine_covariance.assign(9 * k_mines, nan);
   if (o.max_iterations < 1 || n == 0) return result;  // nothing solved (validate() refuses such options)
-  const MeasurementOptions measurements{o.noise_factor, o.biases};
+  const MeasurementOptions measurements{o.noise_factor, o.biases,
+                                        fixed_odometry ? FactorSet::without_odometry : FactorSet::all};
   const BiasVec prior_sigma = o.biases ? bias_prior_sigma(model, o.noise_factor) : BiasVec::Zero();
-  const std::size_t q = 3 * k_mines + (o.biases ? kBiasCount : 0);
-  ArrowheadChain chain(n, q);  // one set of buffers for every linearisation
   chain.keep_cross_covariance_at(tested_steps(m, fixes));
   if (o.biases) chain.keep_cross_covariance_columns(3 * k_mines, kBiasCount);
   double previous_step = std::numeric_limits<double>::infinity();
   for (int it = 0; it < o.max_iterations; ++it) {
-    chain.reset();
     ChainBuilder builder(chain, k_mines, o.biases, lin.bias);
-    add_priors(chain, builder, prior_sigma);
+    if (fixed_odometry) {
+      chain.reset_keeping_steps();
+      add_priors(chain, builder, prior_sigma);
+      chain.add_steps_again(odometry_delta);
+    } else {
+      chain.reset();
+      add_priors(chain, builder, prior_sigma);
+    }
     linearise_measurements(m, model, fixes, measurements, lin, builder);
     chain.solve();
     ++result.iterations;
@@ -142,6 +162,8 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     if (last) {
       // The checks on the factors just solved (before the linearisation point moves).
       ResidualStatistics statistics(chain, k_mines, o.biases, lin.bias);
+      for (std::size_t k = 0; k < odometry_delta.size(); ++k)
+        statistics.odometry(k, chain.step_information(k), odometry_delta[k], BiasJacobian::Zero());
       linearise_measurements(m, model, fixes, measurements, lin, statistics);
       for (int b = 0; b < kBiasCount && o.biases; ++b)
         statistics.static_prior(builder.bias_offset() + static_cast<std::size_t>(b), 0.0,
@@ -165,6 +187,7 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
       // solve and the linearisation needed.
       chain.release_workspace();
       std::vector<Vec3d>().swap(lin.position);
+      std::vector<Vec3d>().swap(odometry_delta);
       result.mean.resize(3 * n);
       result.covariance.resize(9 * n);
       for (std::size_t k = 0; k < n; ++k) {

@@ -75,6 +75,44 @@ TEST(MissionFile, ReadsTheSameNavigationWithoutTheTruth) {
   EXPECT_EQ(r.half_widths.heading, m.half_widths.heading);
 }
 
+// gesmi kalman reads the truth after its smoothing (read_mission_truth): the same truth
+// as one read, and a file whose truth does not fit the mission refused, the mission left
+// without truth.
+TEST(MissionFile, ReadsTheTruthAfterTheMission) {
+  Mission m = sample_mission();
+  m.truth_marks_mine.assign(m.mark_count(), 0);
+  const std::string folder = test::temp_folder("mission-truth-after");
+  write_mission(m, folder + "/m.h5");
+  Mission r = read_mission(folder + "/m.h5", TruthReading::skip);
+  read_mission_truth(folder + "/m.h5", r);
+  const Mission whole = read_mission(folder + "/m.h5");
+  for (const auto field : {&Mission::truth_x, &Mission::truth_y, &Mission::truth_z, &Mission::truth_mines,
+                           &Mission::truth_missed_marks})
+    EXPECT_EQ(r.*field, whole.*field);
+  EXPECT_EQ(r.truth_marks_mine, whole.truth_marks_mine);
+  EXPECT_FALSE(r.truth_x.empty());
+  EXPECT_THROW(read_mission_truth(folder + "/m.h5", r), std::logic_error);  // read already
+
+  // Another mission (one step fewer) under the same name: its truth is refused.
+  Mission shorter = sample_mission();
+  for (auto* column : {&shorter.time, &shorter.roll, &shorter.pitch, &shorter.heading, &shorter.vx, &shorter.vy,
+                       &shorter.vz, &shorter.altitude, &shorter.depth, &shorter.truth_x, &shorter.truth_y,
+                       &shorter.truth_z})
+    column->pop_back();
+  shorter.gps_time.back() = shorter.time.back();
+  write_mission(shorter, folder + "/other.h5");
+  Mission first = read_mission(folder + "/m.h5", TruthReading::skip);
+  try {
+    read_mission_truth(folder + "/other.h5", first);
+    ADD_FAILURE() << "a truth of another length was read";
+  } catch (const FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("/truth/position: expected " + std::to_string(m.size()) + " x 3"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(first.truth_x.empty() && first.truth_mines.empty() && first.truth_marks_mine.empty());
+}
+
 TEST(MissionFile, IsReadableByH5py) {
   const std::string path = test::temp_folder("mission") + "/m.h5";
   write_mission(sample_mission(), path);

@@ -12,6 +12,8 @@
 #include <Eigen/LU>
 #include <Eigen/SparseCholesky>
 #include <random>
+#include <span>
+#include <vector>
 
 namespace gesmi {
 namespace {
@@ -92,6 +94,55 @@ TEST(ArrowheadChain, MatchesADenseLeastSquaresSolve) {
   EXPECT_THROW(b.chain.solve(), std::logic_error);
   b.chain.release_workspace();
   EXPECT_THROW(b.chain.solve(), std::logic_error);
+}
+
+// The smoother without biases keeps the odometry's information between passes and adds
+// its steps again (reset_keeping_steps, add_steps_again): the system solved must be the
+// one a chain given every factor afresh solves, bit for bit, whatever the other factors.
+TEST(ArrowheadChain, StepsKeptAndAddedAgainSolveAsTheStepsGivenAfresh) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const std::size_t n = 700, q = 6;  // (several of the backward pass's recomputed blocks)
+  std::vector<Mat3> w;
+  std::vector<Vec3> delta;
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    w.push_back(random_spd(rng, 50.0));
+    delta.push_back(Vec3(u(rng), u(rng), u(rng)));
+  }
+  // The factors of one pass, which change between passes.
+  const auto other_factors = [&](ArrowheadChain& chain, unsigned seed) {
+    std::mt19937_64 pass(seed);
+    chain.add_position(0, 1e-10 * Mat3::Identity(), Vec3::Zero());
+    for (std::size_t k = 0; k < n; k += 5) chain.add_position_row(k, Eigen::RowVector3d(0, 0, 1), 10 * u(pass), 2 + u(pass));
+    for (const std::size_t k : {std::size_t{40}, std::size_t{41}, std::size_t{300}, std::size_t{699}}) {
+      Eigen::RowVectorXd hm = Eigen::RowVectorXd::Zero(q);
+      for (std::size_t i = 0; i < q; ++i) hm(static_cast<Eigen::Index>(i)) = u(pass);
+      chain.add_mixed(k, Eigen::RowVector3d(u(pass), u(pass), u(pass)), hm, u(pass), 3.0 + u(pass));
+    }
+  };
+  ArrowheadChain kept(n, q);
+  for (std::size_t k = 0; k + 1 < n; ++k) kept.add_step(k, w[k], delta[k]);
+  for (const unsigned pass : {1u, 2u, 3u}) {
+    kept.reset_keeping_steps();
+    other_factors(kept, pass);
+    kept.add_steps_again(delta);
+    kept.solve();
+    ArrowheadChain fresh(n, q);
+    other_factors(fresh, pass);
+    for (std::size_t k = 0; k + 1 < n; ++k) fresh.add_step(k, w[k], delta[k]);
+    fresh.solve();
+    for (std::size_t k = 0; k < n; ++k) {
+      ASSERT_EQ(kept.mean(k), fresh.mean(k)) << "pass " << pass << ", step " << k;
+      ASSERT_EQ(kept.covariance(k), fresh.covariance(k)) << "pass " << pass << ", step " << k;
+    }
+    EXPECT_EQ(kept.static_mean(), fresh.static_mean());
+    EXPECT_EQ(kept.static_covariance(), fresh.static_covariance());
+  }
+  // One delta per step, and only while the steps' information is kept.
+  kept.reset_keeping_steps();
+  EXPECT_THROW(kept.add_steps_again(std::span<const Vec3>(delta).first(n - 2)), std::invalid_argument);
+  kept.release_workspace();
+  EXPECT_THROW(kept.reset_keeping_steps(), std::logic_error);
 }
 
 // Cross covariances Cov(p_k, m), kept at chosen steps and for chosen columns at every
