@@ -93,7 +93,10 @@ void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVe
 // 3 x q coupling at the last event e. Accumulating T_k^T S_k T_k and T_k^T c_k over a
 // segment lets the q x q updates happen once per event instead of once per step, and
 // the backward recursions run on 3x3 blocks, so a step costs a few 3x3 products.
-void ArrowheadChain::solve() {
+// flatten: GCC left Eigen's 3x3 products and copies as calls (a third of the smoother's
+// time in perf); inlined, the same operations in the same order (bitwise the same
+// results) take 30 % less.
+[[gnu::flatten]] void ArrowheadChain::solve() {
   if (solved_) throw std::logic_error("ArrowheadChain::solve: the factors were solved already; reset() and add them again");
   solved_ = true;
   const auto q = static_cast<Eigen::Index>(q_);
