@@ -26,7 +26,7 @@ void ArrowheadChain::reset_keeping_steps() {
   const auto q = static_cast<Eigen::Index>(q_);
   d_ = MatX::Identity(q, q) * prior_info_;
   eta_m_.setZero();
-  solved_ = false;
+  stage_ = Stage::factors;
 }
 
 void ArrowheadChain::add_position(std::size_t k, const Mat3& information, const Vec3& mean) {
@@ -93,19 +93,23 @@ void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVe
 // 3 x q coupling at the last event e. Accumulating T_k^T S_k T_k and T_k^T c_k over a
 // segment lets the q x q updates happen once per event instead of once per step, and
 // the backward recursions run on 3x3 blocks, so a step costs a few 3x3 products.
+void ArrowheadChain::solve() {
+  solve_means();
+  solve_covariances();
+}
+
 // flatten: GCC left Eigen's 3x3 products and copies as calls (a third of the smoother's
 // time in perf); inlined, the same operations in the same order (bitwise the same
 // results) take 30 % less.
-[[gnu::flatten]] void ArrowheadChain::solve() {
-  if (solved_) throw std::logic_error("ArrowheadChain::solve: the factors were solved already; reset() and add them again");
-  solved_ = true;
+[[gnu::flatten]] void ArrowheadChain::solve_means() {
+  if (stage_ != Stage::factors) throw std::logic_error("ArrowheadChain::solve: the factors were solved already; reset() and add them again");
+  stage_ = Stage::means;
   const auto q = static_cast<Eigen::Index>(q_);
   // The steps with a mixed factor, each the start of a segment.
-  std::vector<std::size_t> events;
-  events.reserve(mixed_.size());
-  for (const auto& [k, b] : mixed_) events.push_back(k);
-  std::vector<Mat3> coupling_start((n_ + kCouplingBlock - 1) / kCouplingBlock);  // T_k at each block's start
-  std::vector<MatX> segment_b;  // B_e of each segment (3 x q)
+  events_.clear();
+  for (const auto& [k, b] : mixed_) events_.push_back(k);
+  coupling_start_.assign((n_ + kCouplingBlock - 1) / kCouplingBlock, Mat3::Zero());  // T_k at each block's start
+  segment_b_.clear();  // B_e of each segment (3 x q)
   MatX d = d_;
   VecX eta_m = eta_m_;
   Mat3 a = diag_.empty() ? Mat3::Zero() : diag_[0];
@@ -114,8 +118,8 @@ void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVe
   Mat3 acc = Mat3::Zero();
   Vec3 acc_eta = Vec3::Zero();
   const auto close_segment = [&] {
-    if (segment_b.empty()) return;
-    const MatX& b = segment_b.back();
+    if (segment_b_.empty()) return;
+    const MatX& b = segment_b_.back();
     d.noalias() -= b.transpose() * acc * b;
     eta_m.noalias() -= b.transpose() * acc_eta;
     acc.setZero();
@@ -125,7 +129,7 @@ void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVe
     MatX b = mixed;
     if (carried) b += t * *carried;
     close_segment();
-    segment_b.push_back(std::move(b));
+    segment_b_.push_back(std::move(b));
     t.setIdentity();
   };
   auto next_mixed = mixed_.begin();  // the first step with a mixed factor not yet reached
@@ -136,12 +140,12 @@ void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVe
   if (n_ > 0)
     if (const MatX* b0 = mixed_at(0)) open_segment(*b0, nullptr);
   for (std::size_t k = 0; k < n_; ++k) {
-    if (k % kCouplingBlock == 0) coupling_start[k / kCouplingBlock] = t;
+    if (k % kCouplingBlock == 0) coupling_start_[k / kCouplingBlock] = t;
     const Mat3 s_k = a.inverse();
     const Vec3 c_k = s_k * eta;
     diag_[k] = s_k;  // the information block of p_k was read at step k - 1
     eta_[k] = c_k;
-    if (!segment_b.empty()) {
+    if (!segment_b_.empty()) {
       const Mat3 p_k = s_k * t;  // P_k
       acc.noalias() += t.transpose() * p_k;
       acc_eta.noalias() += t.transpose() * c_k;
@@ -152,10 +156,10 @@ void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVe
     a = diag_[k + 1] - w * s_k * w;
     eta = eta_[k + 1] + w * c_k;
     if (const MatX* b = mixed_at(k + 1)) {
-      if (segment_b.empty()) {
+      if (segment_b_.empty()) {
         open_segment(*b, nullptr);
       } else {
-        const MatX carried = segment_b.back();
+        const MatX carried = segment_b_.back();
         open_segment(*b, &carried);
       }
     }
@@ -166,17 +170,32 @@ void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVe
   m_mean_ = static_solver.solve(eta_m);
   m_cov_ = static_solver.solve(MatX::Identity(q, q));
   // Per segment: B_e m, B_e Sigma_mm and B_e Sigma_mm B_e^T.
-  std::vector<Vec3> bm;
-  std::vector<MatX> b_sigma;
-  std::vector<Mat3> b_sigma_b;
-  for (const MatX& b : segment_b) {
-    bm.push_back(b * m_mean_);
-    b_sigma.push_back(b * m_cov_);
-    b_sigma_b.push_back(b_sigma.back() * b.transpose());
+  bm_.clear();
+  b_sigma_.clear();
+  b_sigma_b_.clear();
+  for (const MatX& b : segment_b_) {
+    bm_.push_back(b * m_mean_);
+    b_sigma_.push_back(b * m_cov_);
+    b_sigma_b_.push_back(b_sigma_.back() * b.transpose());
   }
+  backward_pass(Stage::means);
+}
+
+[[gnu::flatten]] void ArrowheadChain::solve_covariances() {
+  if (stage_ != Stage::means) throw std::logic_error("ArrowheadChain::solve_covariances: solve_means() first, once per set of factors");
+  stage_ = Stage::covariances;
+  backward_pass(Stage::covariances);
+}
+
+// Backward: p_k = c_k - L_k p_{k+1} - P_k B_e m, with L_k = -S_k W_k (the means pass). Within
+// a segment the cross covariance X_{k} = Cov(p_k, m) is alpha_k Z + beta_k B_e Sigma_mm,
+// with Z = X at the step after the segment; only Y_k = X_{k+1} B_e^T (3x3) is needed per
+// step (the covariance pass). The means pass leaves diag_ = S_k for the covariance pass.
+void ArrowheadChain::backward_pass(Stage pass) {
+  const auto q = static_cast<Eigen::Index>(q_);
   // The segment of step k: the index of the last event at or before it (-1: none).
   const auto segment_of = [&](std::size_t k) {
-    return static_cast<int>(std::upper_bound(events.begin(), events.end(), k) - events.begin()) - 1;
+    return static_cast<int>(std::upper_bound(events_.begin(), events_.end(), k) - events_.begin()) - 1;
   };
   // P_k of the steps of a block, recomputed as the forward pass computed them. Their
   // S_k are still in diag_: the backward pass has not reached the block yet.
@@ -184,9 +203,9 @@ void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVe
   const auto recompute_coupling = [&](std::size_t first, std::size_t end) {
     int segment = segment_of(first);
     auto next_event = static_cast<std::size_t>(segment + 1);  // the first event after `first`
-    Mat3 t_k = coupling_start[first / kCouplingBlock];
+    Mat3 t_k = coupling_start_[first / kCouplingBlock];
     for (std::size_t k = first; k < end; ++k) {
-      const bool event = next_event < events.size() && events[next_event] == k;
+      const bool event = next_event < events_.size() && events_[next_event] == k;
       if (event) {
         ++segment;
         ++next_event;
@@ -196,41 +215,40 @@ void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVe
       coupling[k - first] = diag_[k] * t_k;
     }
   };
-  // Backward: p_k = c_k - L_k p_{k+1} - P_k B_e m, with L_k = -S_k W_k. Within a segment
-  // the cross covariance X_{k} = Cov(p_k, m) is alpha_k Z + beta_k B_e Sigma_mm, with Z = X
-  // at the step after the segment; only Y_k = X_{k+1} B_e^T (3x3) is needed per step.
   MatX z = MatX::Zero(3, q);  // X_{k+1} in full, valid at segment boundaries
   Mat3 alpha = Mat3::Identity(), beta = Mat3::Zero();  // X_{k+1} = alpha Z + beta B_e Sigma
   Mat3 y_end = Mat3::Zero();                           // Z B_e^T for the current segment
   int current = -2;
-  int segment = static_cast<int>(events.size()) - 1;  // the segment of step k below
+  int segment = static_cast<int>(events_.size()) - 1;  // the segment of step k below
   for (std::size_t k = n_; k-- > 0;) {
     if (k + 1 == n_ || (k + 1) % kCouplingBlock == 0) recompute_coupling(k - k % kCouplingBlock, k + 1);
-    while (segment >= 0 && events[static_cast<std::size_t>(segment)] > k) --segment;
+    while (segment >= 0 && events_[static_cast<std::size_t>(segment)] > k) --segment;
+    const Mat3 l = k + 1 < n_ ? (-diag_[k] * step_info_[k]).eval() : Mat3::Zero();
+    if (pass == Stage::means) {
+      // eta_[k + 1] holds the mean of p_{k+1} by now, eta_[k] still c_k.
+      Vec3 p = eta_[k];
+      if (k + 1 < n_) p -= l * eta_[k + 1];
+      if (segment >= 0) p -= coupling[k % kCouplingBlock] * bm_[static_cast<std::size_t>(segment)];
+      eta_[k] = p;
+      continue;
+    }
     if (segment != current) {
       // Entering a new segment (going backward): X_{k+1} in full from the previous one.
-      if (current >= 0 && k + 1 < n_) z = alpha * z + beta * b_sigma[static_cast<std::size_t>(current)];
+      if (current >= 0 && k + 1 < n_) z = alpha * z + beta * b_sigma_[static_cast<std::size_t>(current)];
       alpha.setIdentity();
       beta.setZero();
       current = segment;
-      if (current >= 0) y_end = z * segment_b[static_cast<std::size_t>(current)].transpose();
+      if (current >= 0) y_end = z * segment_b_[static_cast<std::size_t>(current)].transpose();
     }
-    // eta_[k + 1] and diag_[k + 1] hold the mean and covariance of p_{k+1} by now;
-    // diag_[k] still holds S_k.
-    Vec3 p = eta_[k];
+    // diag_[k + 1] holds the covariance of p_{k+1} by now; diag_[k] still holds S_k.
     Mat3 cov = diag_[k];
-    const Mat3 l = k + 1 < n_ ? (-diag_[k] * step_info_[k]).eval() : Mat3::Zero();
-    if (k + 1 < n_) {
-      p -= l * eta_[k + 1];
-      cov += l * diag_[k + 1] * l.transpose();
-    }
+    if (k + 1 < n_) cov += l * diag_[k + 1] * l.transpose();
     if (current >= 0) {
       const auto e = static_cast<std::size_t>(current);
       const Mat3& p_k = coupling[k % kCouplingBlock];
-      p -= p_k * bm[e];
-      cov += p_k * b_sigma_b[e] * p_k.transpose();
+      cov += p_k * b_sigma_b_[e] * p_k.transpose();
       if (k + 1 < n_) {
-        const Mat3 y = alpha * y_end + beta * b_sigma_b[e];  // X_{k+1} B_e^T
+        const Mat3 y = alpha * y_end + beta * b_sigma_b_[e];  // X_{k+1} B_e^T
         const Mat3 cross = l * y * p_k.transpose();
         cov += cross + cross.transpose();
       }
@@ -241,18 +259,17 @@ void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVe
       alpha = (-l * alpha).eval();  // before the first event: X_k = -L_k X_{k+1}
       beta = (-l * beta).eval();
     }
-    eta_[k] = p;
     diag_[k] = 0.5 * (cov + cov.transpose());
     // X_k = alpha Z + beta B_e Sigma_mm (beta is zero before the first event).
     if (column_count_ > 0) {
       const auto first = static_cast<Eigen::Index>(column_first_), count = static_cast<Eigen::Index>(column_count_);
       Eigen::Map<Eigen::Matrix<double, 3, Eigen::Dynamic>> x(cross_columns_.data() + 3 * column_count_ * k, 3, count);
       x.noalias() = alpha * z.middleCols(first, count);
-      if (current >= 0) x.noalias() += beta * b_sigma[static_cast<std::size_t>(current)].middleCols(first, count);
+      if (current >= 0) x.noalias() += beta * b_sigma_[static_cast<std::size_t>(current)].middleCols(first, count);
     }
     if (const auto kept = cross_at_.find(k); kept != cross_at_.end()) {
       kept->second = alpha * z;
-      if (current >= 0) kept->second += beta * b_sigma[static_cast<std::size_t>(current)];
+      if (current >= 0) kept->second += beta * b_sigma_[static_cast<std::size_t>(current)];
     }
   }
 }

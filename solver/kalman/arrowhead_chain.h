@@ -64,7 +64,14 @@ class ArrowheadChain {
 
   /// Solves, once per set of factors (std::logic_error otherwise: the factors were
   /// overwritten); afterwards mean(k), covariance(k), static_mean(), static_covariance().
+  /// The same as solve_means() then solve_covariances().
   void solve();
+  /// The means alone (and the static unknowns' covariance): a third of solve()'s
+  /// backward work, for a linearisation that needs no covariance. covariance(k) and the
+  /// cross covariances are meaningless until solve_covariances().
+  void solve_means();
+  /// After solve_means() (std::logic_error otherwise): the covariances, as solve()'s.
+  void solve_covariances();
   /// The smoothed mean and covariance of p_k; meaningful only after solve().
   const Vec3& mean(std::size_t k) const { return eta_[k]; }
   const Mat3& covariance(std::size_t k) const { return diag_[k]; }
@@ -89,6 +96,8 @@ class ArrowheadChain {
   // block from a T_k kept every kCouplingBlock steps, with the same operations in the
   // same order as the forward pass, so that the results are bitwise the same.
   static constexpr std::size_t kCouplingBlock = 256;
+  enum class Stage { factors, means, covariances };  // what the buffers hold
+  void backward_pass(Stage pass);
 
   std::size_t n_, q_;
   double prior_info_;
@@ -104,7 +113,15 @@ class ArrowheadChain {
   std::map<std::size_t, MatX> cross_at_;  // Cov(p_k, m) at the steps asked for
   std::size_t column_first_ = 0, column_count_ = 0;
   std::vector<double> cross_columns_;     // n x 3 x count, column-major per step
-  bool solved_ = false;      // the factors were overwritten by a solve; reset() clears it
+  Stage stage_ = Stage::factors;  // past `factors`, they were overwritten; reset() clears it
+  // What the forward pass leaves for the backward passes: the steps with a mixed factor
+  // (events), T_k at each kCouplingBlock, per segment B_e, B_e m, B_e Sigma_mm and
+  // B_e Sigma_mm B_e^T.
+  std::vector<std::size_t> events_;
+  std::vector<Mat3> coupling_start_;
+  std::vector<MatX> segment_b_, b_sigma_;
+  std::vector<Vec3> bm_;
+  std::vector<Mat3> b_sigma_b_;
 };
 
 }  // namespace gesmi

@@ -128,35 +128,51 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
       add_priors(chain, builder, prior_sigma);
     }
     linearise_measurements(m, model, fixes, measurements, lin, builder);
-    chain.solve();
+    chain.solve_means();  // the covariances only where they are read (below)
     ++result.iterations;
     // The step: how far the new estimate moved any coordinate from the linearisation
     // point (for a mine first placed in this pass, from where it was placed), in metres
     // and in units of that coordinate's smoothed standard deviation.
-    double step = 0.0, step_sigmas = 0.0;
     const double infinity = std::numeric_limits<double>::infinity();
-    const auto measure = [&](const Vec3d& moved, const Vec3d& variance) {
+    // A NaN move or variance counts as infinitely large: it never converges nor stalls.
+    const auto distance = [&](double moved) { return std::isnan(moved) ? infinity : std::fabs(moved); };
+    double step = 0.0;
+    const auto measure = [&](const Vec3d& moved) {
+      for (int c = 0; c < 3; ++c) step = std::max(step, distance(moved[c]));
+    };
+    double step_sigmas = 0.0;
+    const auto measure_sigmas = [&](const Vec3d& moved, const Vec3d& variance) {
       for (int c = 0; c < 3; ++c) {
-        // A NaN move or variance counts as infinitely large: it never converges nor stalls.
-        const double d = std::isnan(moved[c]) ? infinity : std::fabs(moved[c]);
+        const double d = distance(moved[c]);
         const double sigmas = d == 0.0 ? 0.0 : d / std::sqrt(variance[c]);  // +inf when sigma is 0
-        step = std::max(step, d);
         step_sigmas = std::max(step_sigmas, std::isnan(sigmas) ? infinity : sigmas);
       }
     };
-    for (std::size_t k = 0; k < n; ++k)
-      measure(position(chain, builder, k) - lin.position[k], position_covariance(chain, builder, k).diagonal());
-    for (std::size_t i = 0; i < k_mines; ++i) {
-      if (!lin.mine_known[i]) continue;
-      const auto b = static_cast<Eigen::Index>(3 * i);
-      measure(chain.static_mean().segment<3>(b) - lin.mine[i], chain.static_covariance().diagonal().segment<3>(b));
-    }
+    const auto each_move = [&](const auto& visit, bool with_variances) {
+      for (std::size_t k = 0; k < n; ++k) {
+        const Vec3d moved = position(chain, builder, k) - lin.position[k];
+        if (with_variances) visit(moved, position_covariance(chain, builder, k).diagonal());
+        else visit(moved, Vec3d::Zero());
+      }
+      for (std::size_t i = 0; i < k_mines; ++i) {
+        if (!lin.mine_known[i]) continue;
+        const auto b = static_cast<Eigen::Index>(3 * i);
+        visit(chain.static_mean().segment<3>(b) - lin.mine[i], chain.static_covariance().diagonal().segment<3>(b));
+      }
+    };
+    each_move([&](const Vec3d& moved, const Vec3d&) { measure(moved); }, false);
     result.last_step = step;
-    result.last_step_sigmas = step_sigmas;
     result.converged = step <= o.tolerance;
     // Stalled: the steps stopped shrinking (a converging iteration shrinks them, by a third
     // per pass at the slowest seen) while they are negligible against the uncertainty.
-    result.stalled = !result.converged && step >= kStalledRatio * previous_step && step_sigmas <= o.stall_fraction;
+    const bool may_stall = !result.converged && step >= kStalledRatio * previous_step;
+    // The covariances: for the result after the last pass, and to judge a stall.
+    if (result.converged || may_stall || it + 1 == o.max_iterations) {
+      chain.solve_covariances();
+      each_move(measure_sigmas, true);
+      result.last_step_sigmas = step_sigmas;
+    }
+    result.stalled = may_stall && step_sigmas <= o.stall_fraction;
     previous_step = step;
     const bool last = result.converged || result.stalled || it + 1 == o.max_iterations;
     if (last) {
