@@ -3,8 +3,8 @@
 # shared HDF5 loads libcurl and its ~25 libraries for a network driver gesmi never uses,
 # and cairo loads X11's; with them `gesmi --help` took 15 ms of CPU, 58 libraries. The
 # gesmi command links instead the static archives Debian ships in the same -dev packages
-# (same versions): the linker takes only the objects gesmi calls, and --as-needed drops
-# the shared libraries nothing refers to any more. The Python module and the tests keep
+# (same versions), down to compression and fonts: the linker takes only the objects
+# gesmi calls, and --as-needed drops the shared libraries nothing refers to any more. The Python module and the tests keep
 # the shared libraries (a static HDF5 next to h5py's shared one in one process would be
 # two HDF5 libraries). GESMI_STATIC_ARCHIVES=OFF links everything shared.
 option(GESMI_STATIC_ARCHIVES "link the gesmi command with the static archives of its dependencies" ON)
@@ -20,7 +20,8 @@ function(gesmi_link_static_archives target)
   # In link order: each archive before the libraries it calls.
   set(archives)
   foreach(entry IN ITEMS "boost_program_options" "hdf5:${hdf5_dir}" "yaml-cpp" "GeographicLib" "cairo" "pixman-1"
-                         "png16" "crypto")
+                         "fontconfig" "freetype" "png16" "brotlidec" "brotlicommon" "bz2" "expat" "crypto" "sz" "aec"
+                         "z")
     string(REPLACE ":" ";" parts "${entry}")
     list(GET parts 0 name)
     list(LENGTH parts count)
@@ -37,9 +38,13 @@ function(gesmi_link_static_archives target)
     endif()
     list(APPEND archives ${GESMI_ARCHIVE_${name}})
   endforeach()
-  # What the archives call in shared form: compression for HDF5, fonts for cairo.
-  pkg_check_modules(GESMI_FONTS REQUIRED IMPORTED_TARGET fontconfig freetype2)
   target_link_options(${target} PRIVATE -Wl,--as-needed)
-  target_link_libraries(${target} PRIVATE ${archives} ${HDF5_C_LIBRARY_sz} PkgConfig::GESMI_FONTS ${HDF5_C_LIBRARY_z}
-                                          ${CMAKE_DL_LIBS} Threads::Threads)
+  target_link_libraries(${target} PRIVATE ${archives} ${CMAKE_DL_LIBS} Threads::Threads)
+  # The C++ runtime too, and no position-independent executable: libstdc++'s loading
+  # and symbol lookups, and the 20,000 relative relocations of a PIE, were 2.6 of the
+  # 8.5 ms `gesmi --version` took (docs/performance.md, "Start-up"). Not under the
+  # sanitizers, whose runtime replaces the C++ allocation functions.
+  if(NOT GESMI_SANITIZE)
+    target_link_options(${target} PRIVATE -no-pie -static-libstdc++ -static-libgcc)
+  endif()
 endfunction()
