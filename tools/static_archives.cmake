@@ -19,9 +19,15 @@ function(gesmi_link_static_archives target)
   get_filename_component(hdf5_dir "${HDF5_C_LIBRARY_hdf5}" DIRECTORY)
   # In link order: each archive before the libraries it calls.
   set(archives)
+  # Fonts and compression: static too, but shared under the sanitizers, whose leak
+  # suppression names libfontconfig.so (docs/sanitizers.md).
+  set(fonts_and_compression "fontconfig" "freetype" "png16" "brotlidec" "brotlicommon" "bz2" "expat" "crypto" "sz"
+                            "aec" "z")
+  if(GESMI_SANITIZE)
+    set(fonts_and_compression "png16" "crypto")
+  endif()
   foreach(entry IN ITEMS "boost_program_options" "hdf5:${hdf5_dir}" "yaml-cpp" "GeographicLib" "cairo" "pixman-1"
-                         "fontconfig" "freetype" "png16" "brotlidec" "brotlicommon" "bz2" "expat" "crypto" "sz" "aec"
-                         "z")
+                         ${fonts_and_compression})
     string(REPLACE ":" ";" parts "${entry}")
     list(GET parts 0 name)
     list(LENGTH parts count)
@@ -40,11 +46,15 @@ function(gesmi_link_static_archives target)
   endforeach()
   target_link_options(${target} PRIVATE -Wl,--as-needed)
   target_link_libraries(${target} PRIVATE ${archives} ${CMAKE_DL_LIBS} Threads::Threads)
-  # The C++ runtime too, and no position-independent executable: libstdc++'s loading
-  # and symbol lookups, and the 20,000 relative relocations of a PIE, were 2.6 of the
-  # 8.5 ms `gesmi --version` took (docs/performance.md, "Start-up"). Not under the
-  # sanitizers, whose runtime replaces the C++ allocation functions.
-  if(NOT GESMI_SANITIZE)
+  # Otherwise the C++ runtime static too, and no position-independent executable:
+  # libstdc++'s loading and symbol lookups and the 20,000 relative relocations of a PIE
+  # were 2.6 of the 8.5 ms `gesmi --version` took, the shared fonts and compression 1.2
+  # (docs/performance.md, "Start-up"). Under the sanitizers the C++ runtime stays shared:
+  # theirs replaces the C++ allocation functions.
+  if(GESMI_SANITIZE)
+    pkg_check_modules(GESMI_FONTS REQUIRED IMPORTED_TARGET fontconfig freetype2)
+    target_link_libraries(${target} PRIVATE ${HDF5_C_LIBRARY_sz} PkgConfig::GESMI_FONTS ${HDF5_C_LIBRARY_z})
+  else()
     target_link_options(${target} PRIVATE -no-pie -static-libstdc++ -static-libgcc)
   endif()
 endfunction()
