@@ -23,6 +23,12 @@ TEST(CmdKalman, WritesTheDocumentedDatasetsAndStats) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"timings_ms\""), std::string::npos);
   EXPECT_NE(r.out.find("\"containment_3sigma_horizontal\""), std::string::npos);
+  // The truth, read after the smoothing, gives every containment figure (null without it).
+  for (const char* key : {"horizontal", "vertical", "mines", "mines_plane"}) {
+    const std::string name = std::string("\"containment_") + (std::string(key).rfind("mines", 0) == 0 ? "" : "3sigma_") + key;
+    EXPECT_NE(r.out.find(name + "\":"), std::string::npos) << name;
+    EXPECT_EQ(r.out.find(name + "\":null"), std::string::npos) << name;
+  }
   const io::H5File f = io::H5File::open_read(dir + "/k.h5");
   const io::H5Shape mean = f.shape("/kalman/mean");
   EXPECT_EQ(mean.rows, 12001u);
