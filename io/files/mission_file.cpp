@@ -115,13 +115,23 @@ void validate_truth(const Mission& m, const std::string& source) {
   }
 }
 
-// Reads /truth into m, whose navigation and marks are read (their shapes are the truth's).
-void read_truth(const H5File& f, const std::string& path, Mission& m) {
-  if (f.has("/truth/position")) {
-    const H5Shape s = f.shape("/truth/position");
-    if (s.rank != 2 || s.columns != 3 || s.rows != m.size())
-      throw FormatError(path + ": /truth/position: expected " + std::to_string(m.size()) + " x 3, found " +
+// The shapes of /truth/position and /truth/mines against the mission's (metadata only).
+void check_truth_shapes(const H5File& f, const std::string& path, const Mission& m) {
+  const auto expect = [&](const char* dataset, std::size_t rows, const char* what) {
+    if (!f.has(dataset)) return;
+    const H5Shape s = f.shape(dataset);
+    if (s.rank != 2 || s.columns != 3 || s.rows != rows)
+      throw FormatError(path + ": " + dataset + ": expected " + std::to_string(rows) + " x 3 (" + what + "), found " +
                         std::to_string(s.rows) + " x " + std::to_string(s.columns));
+  };
+  expect("/truth/position", m.size(), "one row per navigation sample");
+  expect("/truth/mines", static_cast<std::size_t>(m.mine_count), "one row per mine");
+}
+
+// Reads /truth into m, whose navigation and marks are read (their shapes are the truth's).
+void read_truth_datasets(const H5File& f, const std::string& path, Mission& m) {
+  check_truth_shapes(f, path, m);
+  if (f.has("/truth/position")) {
     std::vector<double>* position[3] = {&m.truth_x, &m.truth_y, &m.truth_z};
     f.read_columns_into("/truth/position", position);
   }
@@ -204,8 +214,13 @@ void validate_mission(const Mission& m, const std::string& source) {
   validate_truth(m, source);
 }
 
-Mission read_mission(const std::string& path, TruthReading truth) {
-  const H5File f = H5File::open_read(path);
+Mission read_mission(const std::string& path, TruthReading truth) { return MissionReader(path).read(truth); }
+
+MissionReader::MissionReader(const std::string& path) : path_(path), file_(H5File::open_read(path)) {}
+
+Mission MissionReader::read(TruthReading truth) const {
+  const H5File& f = file_;
+  const std::string& path = path_;
   Mission m;
   const std::int64_t version = check_format(f, kFormat, "gesmi mission", kVersions);
   const auto required_double = [&](const std::string& object, const std::string& name) {
@@ -281,23 +296,22 @@ Mission read_mission(const std::string& path, TruthReading truth) {
     m.mark_side = f.read_ints("/marks/side", 1);
   }
   if (truth == TruthReading::skip) {
+    check_truth_shapes(f, path, m);  // a damaged truth refused before any work
     validate_mission(m, path);
     fill_local_gps(m, path);
     return m;
   }
-  read_truth(f, path, m);
+  read_truth_datasets(f, path, m);
   validate_mission(m, path);
   fill_local_gps(m, path);
   return m;
 }
 
-void read_mission_truth(const std::string& path, Mission& m) {
-  if (m.has_truth() || !m.truth_mines.empty()) throw std::logic_error("read_mission_truth: the truth was read already");
-  const H5File f = H5File::open_read(path);
-  check_format(f, kFormat, "gesmi mission", kVersions);
+void MissionReader::read_truth(Mission& m) const {
+  if (m.has_truth() || !m.truth_mines.empty()) throw std::logic_error("MissionReader::read_truth: the truth was read already");
   try {
-    read_truth(f, path, m);
-    validate_truth(m, path);
+    read_truth_datasets(file_, path_, m);
+    validate_truth(m, path_);
   } catch (...) {  // the mission stays as it was: without truth
     for (auto* column : {&m.truth_x, &m.truth_y, &m.truth_z, &m.truth_mines, &m.truth_missed_marks})
       std::vector<double>().swap(*column);

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "io/hdf5/h5_file.h"
 #include "solver/mission/mission.h"
 
 namespace gesmi::io {
@@ -16,11 +17,26 @@ enum class TruthReading { read, skip };
 
 /// Reads and validates a mission; fills the GPS fixes in the local frame.
 Mission read_mission(const std::string& path, TruthReading truth = TruthReading::read);
-/// Reads the simulated truth (if any) into a mission read with TruthReading::skip from
-/// the same file: a command whose peak memory is its computation reads the truth after
-/// it (gesmi kalman). Checks its shape against the mission's (FormatError naming the
-/// dataset); the mission is unchanged then.
-void read_mission_truth(const std::string& path, Mission& mission);
+/// A mission file kept open: the mission first, its truth later from the same file,
+/// even if the path is replaced meanwhile (gesmi kalman reads the truth after the
+/// smoothing, so that its peak memory is the smoothing's).
+class MissionReader {
+ public:
+  /// Opens the file; FormatError if it is missing or not HDF5.
+  explicit MissionReader(const std::string& path);
+  /// read_mission()'s reading and validation. With TruthReading::skip the shapes of the
+  /// truth's positions and mines are still checked, so that a damaged truth is refused
+  /// before any work.
+  Mission read(TruthReading truth = TruthReading::read) const;
+  /// Reads the truth (if any) into a mission read with TruthReading::skip (std::logic_error
+  /// if it holds a truth already), with the checks of read(); FormatError naming the
+  /// dataset, the mission then unchanged.
+  void read_truth(Mission& mission) const;
+
+ private:
+  std::string path_;
+  H5File file_;
+};
 /// Writes a mission atomically (temporary name, then rename).
 void write_mission(const Mission& mission, const std::string& path);
 

@@ -4,6 +4,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace gesmi {
 
@@ -15,11 +16,37 @@ ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, double prior_info)
 
 void ArrowheadChain::reset() {
   step_info_.assign(n_ > 0 ? n_ - 1 : 0, Mat3::Zero());  // (released after a last solve)
-  reset_keeping_steps();
+  steps_ = Steps::building;
+  clear_factors();
+}
+
+void ArrowheadChain::require_steps(const char* caller) const {
+  if (steps_ == Steps::released)
+    throw std::logic_error(std::string("ArrowheadChain::") + caller + ": the workspace was released; reset() first");
+}
+
+void ArrowheadChain::release_workspace() {
+  std::vector<Mat3>().swap(step_info_);
+  steps_ = Steps::released;
+  release_segments();
+}
+
+void ArrowheadChain::release_segments() {
+  std::vector<std::size_t>().swap(events_);
+  std::vector<Mat3>().swap(coupling_start_);
+  std::vector<MatX>().swap(segment_b_);
+  std::vector<MatX>().swap(b_sigma_);
+  std::vector<Vec3>().swap(bm_);
+  std::vector<Mat3>().swap(b_sigma_b_);
 }
 
 void ArrowheadChain::reset_keeping_steps() {
-  if (step_info_.size() + 1 < n_) throw std::logic_error("ArrowheadChain::reset_keeping_steps: the steps were released");
+  require_steps("reset_keeping_steps");
+  steps_ = Steps::kept;
+  clear_factors();
+}
+
+void ArrowheadChain::clear_factors() {
   for (Mat3& x : diag_) x.setZero();
   for (Vec3& x : eta_) x.setZero();
   mixed_.clear();
@@ -35,24 +62,26 @@ void ArrowheadChain::add_position(std::size_t k, const Mat3& information, const 
 }
 
 void ArrowheadChain::add_step(std::size_t k, const Mat3& w, const Vec3& delta) {
+  if (steps_ != Steps::building)
+    throw std::logic_error("ArrowheadChain::add_step: the steps are kept or released; reset() first");
+  step_info_[k] += w;
+  add_step_terms(k, w, delta);
+}
+
+void ArrowheadChain::add_step_terms(std::size_t k, const Mat3& w, const Vec3& delta) {
   // Residual p_{k+1} - p_k - delta: blocks (k,k) and (k+1,k+1) get W, (k,k+1) gets -W.
   diag_[k] += w;
   diag_[k + 1] += w;
-  step_info_[k] += w;
   eta_[k] -= w * delta;
   eta_[k + 1] += w * delta;
 }
 
 void ArrowheadChain::add_steps_again(std::span<const Vec3> delta) {
+  if (steps_ != Steps::kept || stage_ != Stage::factors)
+    throw std::logic_error("ArrowheadChain::add_steps_again: once after reset_keeping_steps()");
   if (delta.size() != step_info_.size()) throw std::invalid_argument("ArrowheadChain::add_steps_again: one delta per step");
-  // add_step's sums in its order, the information being already in step_info_.
-  for (std::size_t k = 0; k < delta.size(); ++k) {
-    const Mat3& w = step_info_[k];
-    diag_[k] += w;
-    diag_[k + 1] += w;
-    eta_[k] -= w * delta[k];
-    eta_[k + 1] += w * delta[k];
-  }
+  steps_ = Steps::added_again;
+  for (std::size_t k = 0; k < delta.size(); ++k) add_step_terms(k, step_info_[k], delta[k]);
 }
 
 void ArrowheadChain::add_position_row(std::size_t k, const Row3& hp, double z, double w) {
@@ -102,7 +131,9 @@ void ArrowheadChain::solve() {
 // time in perf); inlined, the same operations in the same order (bitwise the same
 // results) take 30 % less.
 [[gnu::flatten]] void ArrowheadChain::solve_means() {
-  if (stage_ != Stage::factors) throw std::logic_error("ArrowheadChain::solve: the factors were solved already; reset() and add them again");
+  require_steps("solve_means");
+  if (stage_ != Stage::factors)
+    throw std::logic_error("ArrowheadChain::solve_means: the factors were solved already; reset() and add them again");
   stage_ = Stage::means;
   const auto q = static_cast<Eigen::Index>(q_);
   // The steps with a mixed factor, each the start of a segment.
@@ -182,9 +213,12 @@ void ArrowheadChain::solve() {
 }
 
 [[gnu::flatten]] void ArrowheadChain::solve_covariances() {
-  if (stage_ != Stage::means) throw std::logic_error("ArrowheadChain::solve_covariances: solve_means() first, once per set of factors");
+  require_steps("solve_covariances");
+  if (stage_ != Stage::means)
+    throw std::logic_error("ArrowheadChain::solve_covariances: solve_means() first, once per set of factors");
   stage_ = Stage::covariances;
   backward_pass(Stage::covariances);
+  release_segments();  // (with biases every step is a segment: not kept to the peak)
 }
 
 // Backward: p_k = c_k - L_k p_{k+1} - P_k B_e m, with L_k = -S_k W_k (the means pass). Within

@@ -33,16 +33,20 @@ class ArrowheadChain {
   void reset();
   /// reset() but for the steps' information W_k (add_step), which stays for
   /// add_steps_again(): an odometry that does not change between linearisations (no
-  /// biases) is computed once.
+  /// biases) is computed once. add_step() is refused until the next reset() (it would
+  /// add to the kept W_k).
   void reset_keeping_steps();
-  /// After reset_keeping_steps(): the steps p_{k+1} - p_k = delta[k] again, with the
-  /// information kept; the same system as add_step(k, W_k, delta[k]) for every k.
+  /// Once after reset_keeping_steps() (std::logic_error otherwise): the steps
+  /// p_{k+1} - p_k = delta[k] again, with the information kept; the same system, bit for
+  /// bit, as add_step(k, W_k, delta[k]) for every k.
   void add_steps_again(std::span<const Vec3> delta);
   /// W_k of the step from p_k to p_{k+1}; meaningful until release_workspace().
   const Mat3& step_information(std::size_t k) const { return step_info_[k]; }
-  /// Frees what only solve() needs, once no further solve follows (the means and
-  /// covariances stay).
-  void release_workspace() { std::vector<Mat3>().swap(step_info_); }
+  /// Frees what only the solves need, once no further solve follows: the steps'
+  /// information and what the forward pass left for the backward passes (the means and
+  /// covariances stay). Solving or adding steps again is refused afterwards, until
+  /// reset().
+  void release_workspace();
 
   /// Information W and mean term on p_k alone: adds W to the block and W * mean.
   void add_position(std::size_t k, const Mat3& information, const Vec3& mean);
@@ -66,13 +70,15 @@ class ArrowheadChain {
   /// overwritten); afterwards mean(k), covariance(k), static_mean(), static_covariance().
   /// The same as solve_means() then solve_covariances().
   void solve();
-  /// The means alone (and the static unknowns' covariance): a third of solve()'s
-  /// backward work, for a linearisation that needs no covariance. covariance(k) and the
-  /// cross covariances are meaningless until solve_covariances().
+  /// The means alone (and the static unknowns' covariance), for a linearisation that
+  /// needs no covariance: the backward pass without its covariance recursion, which is
+  /// most of its arithmetic. covariance(k) and the cross covariances are meaningless
+  /// until solve_covariances().
   void solve_means();
   /// After solve_means() (std::logic_error otherwise): the covariances, as solve()'s.
   void solve_covariances();
-  /// The smoothed mean and covariance of p_k; meaningful only after solve().
+  /// The smoothed mean of p_k, meaningful after solve_means() (or solve()), and its
+  /// covariance, meaningful after solve_covariances() (or solve()).
   const Vec3& mean(std::size_t k) const { return eta_[k]; }
   const Mat3& covariance(std::size_t k) const { return diag_[k]; }
   const VecX& static_mean() const { return m_mean_; }
@@ -89,15 +95,23 @@ class ArrowheadChain {
  private:
   // Memory (issue: whole-process speed, 10^7 steps): solve() works in place. Its forward
   // pass overwrites diag_[k] with the conditional covariance S_k and eta_[k] with the
-  // conditional mean c_k, each once it has been read for the last time; the backward
-  // pass overwrites eta_[k] with the mean and diag_[k] with the covariance. The
+  // conditional mean c_k, each once it has been read for the last time; the means' backward
+  // pass overwrites eta_[k] with the mean, the covariances' diag_[k] with the covariance. The
   // coupling P_k = S_k T_k of a step to its segment's unknowns and the gain L_k = -S_k W_k
   // are not stored (P_k took 80 B/step): the backward pass recomputes them, P_k block by
   // block from a T_k kept every kCouplingBlock steps, with the same operations in the
   // same order as the forward pass, so that the results are bitwise the same.
   static constexpr std::size_t kCouplingBlock = 256;
   enum class Stage { factors, means, covariances };  // what the buffers hold
+  // The steps' information: accumulating (add_step), kept for add_steps_again(), added
+  // again, or released.
+  enum class Steps { building, kept, added_again, released };
   void backward_pass(Stage pass);
+  // add_step's terms of the system, for the information already in step_info_[k].
+  void add_step_terms(std::size_t k, const Mat3& w, const Vec3& delta);
+  void require_steps(const char* caller) const;
+  void clear_factors();     // every factor but the steps' information
+  void release_segments();  // what the forward pass left for the backward passes
 
   std::size_t n_, q_;
   double prior_info_;
@@ -114,6 +128,7 @@ class ArrowheadChain {
   std::size_t column_first_ = 0, column_count_ = 0;
   std::vector<double> cross_columns_;     // n x 3 x count, column-major per step
   Stage stage_ = Stage::factors;  // past `factors`, they were overwritten; reset() clears it
+  Steps steps_ = Steps::building;
   // What the forward pass leaves for the backward passes: the steps with a mixed factor
   // (events), T_k at each kCouplingBlock, per segment B_e, B_e m, B_e Sigma_mm and
   // B_e Sigma_mm B_e^T.

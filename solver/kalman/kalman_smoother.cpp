@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "solver/kalman/arrowhead_chain.h"
 #include "solver/kalman/chain_factors.h"
@@ -89,6 +90,7 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
       void odometry(std::size_t k, const Mat3d& information, const Vec3d& step, const BiasJacobian&) override {
         position[k + 1] = position[k] + step;
         if (!kept_in) return;
+        if (delta.size() != k) throw std::logic_error("kalman_smooth: the odometry steps came out of order");
         kept_in->add_step(k, information, step);
         delta.push_back(step);
       }

@@ -69,9 +69,10 @@ int run_kalman(std::span<const std::string> args) {
   Progress progress("gesmi kalman:");  // on a terminal, for long runs only (progress.h)
   progress.update(-1.0, "reading " + v["mission"].as<std::string>());
   auto start = Clock::now();
-  // The truth (for the containment figures) is read after the smoothing: the peak
-  // memory is the smoothing's.
-  Mission mission = io::read_mission(v["mission"].as<std::string>(), io::TruthReading::skip);
+  // The truth (for the containment figures) is read after the smoothing, from the file
+  // kept open: the peak memory is the smoothing's.
+  const io::MissionReader mission_file(v["mission"].as<std::string>());
+  Mission mission = mission_file.read(io::TruthReading::skip);
   apply_config(v, mission, "kalman");
   file.timings_ms["load"] = elapsed_ms(start);
   start = Clock::now();
@@ -80,7 +81,7 @@ int run_kalman(std::span<const std::string> args) {
   file.result = kalman_smooth(mission, mission.model, gps_fixes(mission), o);
   file.timings_ms["smooth"] = elapsed_ms(start);
   start = Clock::now();
-  io::read_mission_truth(v["mission"].as<std::string>(), mission);
+  mission_file.read_truth(mission);
   file.timings_ms["load"] += elapsed_ms(start);
   const Containment c = three_sigma_containment(file.result, mission);
   file.containment = c;

@@ -75,44 +75,6 @@ TEST(MissionFile, ReadsTheSameNavigationWithoutTheTruth) {
   EXPECT_EQ(r.half_widths.heading, m.half_widths.heading);
 }
 
-// gesmi kalman reads the truth after its smoothing (read_mission_truth): the same truth
-// as one read, and a file whose truth does not fit the mission refused, the mission left
-// without truth.
-TEST(MissionFile, ReadsTheTruthAfterTheMission) {
-  Mission m = sample_mission();
-  m.truth_marks_mine.assign(m.mark_count(), 0);
-  const std::string folder = test::temp_folder("mission-truth-after");
-  write_mission(m, folder + "/m.h5");
-  Mission r = read_mission(folder + "/m.h5", TruthReading::skip);
-  read_mission_truth(folder + "/m.h5", r);
-  const Mission whole = read_mission(folder + "/m.h5");
-  for (const auto field : {&Mission::truth_x, &Mission::truth_y, &Mission::truth_z, &Mission::truth_mines,
-                           &Mission::truth_missed_marks})
-    EXPECT_EQ(r.*field, whole.*field);
-  EXPECT_EQ(r.truth_marks_mine, whole.truth_marks_mine);
-  EXPECT_FALSE(r.truth_x.empty());
-  EXPECT_THROW(read_mission_truth(folder + "/m.h5", r), std::logic_error);  // read already
-
-  // Another mission (one step fewer) under the same name: its truth is refused.
-  Mission shorter = sample_mission();
-  for (auto* column : {&shorter.time, &shorter.roll, &shorter.pitch, &shorter.heading, &shorter.vx, &shorter.vy,
-                       &shorter.vz, &shorter.altitude, &shorter.depth, &shorter.truth_x, &shorter.truth_y,
-                       &shorter.truth_z})
-    column->pop_back();
-  shorter.gps_time.back() = shorter.time.back();
-  write_mission(shorter, folder + "/other.h5");
-  Mission first = read_mission(folder + "/m.h5", TruthReading::skip);
-  try {
-    read_mission_truth(folder + "/other.h5", first);
-    ADD_FAILURE() << "a truth of another length was read";
-  } catch (const FormatError& e) {
-    EXPECT_NE(std::string(e.what()).find("/truth/position: expected " + std::to_string(m.size()) + " x 3"),
-              std::string::npos)
-        << e.what();
-  }
-  EXPECT_TRUE(first.truth_x.empty() && first.truth_mines.empty() && first.truth_marks_mine.empty());
-}
-
 TEST(MissionFile, IsReadableByH5py) {
   const std::string path = test::temp_folder("mission") + "/m.h5";
   write_mission(sample_mission(), path);
@@ -139,6 +101,63 @@ std::string edited(const std::string& python_edit) {
   std::ofstream(script) << "import h5py, numpy as np, sys\nf = h5py.File(sys.argv[1], 'r+')\n" << python_edit << "\nf.close()\n";
   EXPECT_EQ(std::system(("/usr/bin/python3 " + script + " " + path).c_str()), 0);
   return path;
+}
+
+// gesmi kalman reads the truth after its smoothing (MissionReader::read_truth), from the
+// file it keeps open: the same truth as one read, that file's truth even when the path
+// is replaced meanwhile, a damaged truth's shape refused at the first read, and a truth
+// refused at the second read leaving the mission without truth.
+TEST(MissionFile, ReadsTheTruthAfterTheMissionFromTheSameFile) {
+  Mission m = sample_mission();
+  m.truth_marks_mine.assign(m.mark_count(), 0);
+  const std::string folder = test::temp_folder("mission-truth-after");
+  const std::string path = folder + "/m.h5";
+  write_mission(m, path);
+  const Mission whole = read_mission(path);
+  {
+    const MissionReader reader(path);
+    Mission r = reader.read(TruthReading::skip);
+    EXPECT_TRUE(r.truth_x.empty() && r.truth_mines.empty());
+    // Another mission (its truth shifted by 1 m) renamed over the path meanwhile.
+    Mission other = sample_mission();
+    for (double& x : other.truth_x) x += 1.0;
+    write_mission(other, folder + "/other.h5");
+    std::filesystem::rename(folder + "/other.h5", path);
+    reader.read_truth(r);
+    for (const auto field : {&Mission::truth_x, &Mission::truth_y, &Mission::truth_z, &Mission::truth_mines,
+                             &Mission::truth_missed_marks})
+      EXPECT_EQ(r.*field, whole.*field);
+    EXPECT_EQ(r.truth_marks_mine, whole.truth_marks_mine);
+    EXPECT_FALSE(r.truth_x.empty());
+    EXPECT_THROW(reader.read_truth(r), std::logic_error);  // read already
+  }
+  // A truth of another length: refused by the first read already.
+  const std::string short_truth = edited("n = f['/truth/position'].shape[0]\n"
+                                         "p = f['/truth/position'][:n - 1]\n"
+                                         "del f['/truth/position']\n"
+                                         "f['/truth/position'] = p\n");
+  try {
+    read_mission(short_truth, TruthReading::skip);
+    ADD_FAILURE() << "a truth of another length was accepted";
+  } catch (const FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("/truth/position: expected 3001 x 3"), std::string::npos) << e.what();
+  }
+  // A truth whose shapes fit but whose marks' mines do not: refused by read_truth, after
+  // the positions were read; the mission is left without any truth.
+  const std::string bad_mines = edited("import numpy as np\n"
+                                       "if '/truth/marks_mine' in f: del f['/truth/marks_mine']\n"
+                                       "f['/truth/marks_mine'] = np.full(f['/marks/time'].shape[0], 7, dtype='int32')\n");
+  const MissionReader reader(bad_mines);
+  Mission r = reader.read(TruthReading::skip);
+  try {
+    reader.read_truth(r);
+    ADD_FAILURE() << "a mark's mine beyond the mission's mines was accepted";
+  } catch (const FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("/truth/marks_mine: row 0"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(r.truth_x.empty() && r.truth_y.empty() && r.truth_z.empty() && r.truth_mines.empty() &&
+              r.truth_missed_marks.empty() && r.truth_marks_mine.empty() && r.truth_marks_outlier.empty() &&
+              r.truth_gps_outlier.empty());
 }
 
 TEST(MissionFile, NamesTheProblemOfEveryBadFile) {

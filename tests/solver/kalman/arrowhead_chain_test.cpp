@@ -151,6 +151,41 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
   EXPECT_THROW(kept.reset_keeping_steps(), std::logic_error);
 }
 
+// The calls that would solve another system than the one given are refused: a step added
+// onto kept information, steps added again twice or after a plain reset, a solve or a
+// covariance pass on a released workspace. Chains of no and one position solve.
+TEST(ArrowheadChain, RefusesCallsThatWouldSolveAnotherSystem) {
+  const Mat3 w = 4.0 * Mat3::Identity();
+  const std::vector<Vec3> delta(3, Vec3(1.0, 0.0, 0.0));
+  ArrowheadChain chain(4, 1);
+  for (std::size_t k = 0; k < 3; ++k) chain.add_step(k, w, delta[k]);
+  chain.reset_keeping_steps();
+  EXPECT_THROW(chain.add_step(0, w, delta[0]), std::logic_error);  // would make it 2W
+  chain.add_steps_again(delta);
+  EXPECT_THROW(chain.add_steps_again(delta), std::logic_error);  // twice
+  chain.add_position(0, Mat3::Identity(), Vec3::Zero());
+  chain.solve_means();
+  EXPECT_LT((chain.mean(3) - Vec3(3.0, 0.0, 0.0)).norm(), 1e-12);  // the three steps from p_0 = 0
+  EXPECT_THROW(chain.add_steps_again(delta), std::logic_error);  // after a solve
+  chain.release_workspace();
+  EXPECT_THROW(chain.solve_covariances(), std::logic_error);  // the workspace is gone
+  EXPECT_THROW(chain.reset_keeping_steps(), std::logic_error);
+  chain.reset();  // a plain reset: nothing kept, steps are added afresh
+  EXPECT_THROW(chain.add_steps_again(delta), std::logic_error);
+  chain.add_step(0, w, delta[0]);
+  // No and one position: nothing to chain.
+  ArrowheadChain none(0, 2);
+  EXPECT_NO_THROW(none.solve());
+  EXPECT_EQ(none.static_mean().size(), 2);
+  ArrowheadChain one(1, 0);
+  one.reset_keeping_steps();
+  one.add_steps_again({});
+  one.add_position(0, 2.0 * Mat3::Identity(), Vec3(1.0, 2.0, 3.0));
+  one.solve();
+  EXPECT_LT((one.mean(0) - Vec3(1.0, 2.0, 3.0)).norm(), 1e-12);
+  EXPECT_LT((one.covariance(0) - 0.5 * Mat3::Identity()).norm(), 1e-12);
+}
+
 // Cross covariances Cov(p_k, m), kept at chosen steps and for chosen columns at every
 // step, against the dense inverse; with mixed factors at the first step, at every step of
 // a stretch (as the bias-aware smoother makes them), rows on one position and priors on

@@ -10,6 +10,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "solver/kalman/arrowhead_chain.h"
+#include "solver/kalman/chain_factors.h"
+#include "solver/kalman/kalman_measurements.h"
 #include "solver/sim/simulator.h"
 #include "tests/support/tiny_mission.h"
 
@@ -36,6 +39,60 @@ TEST(KalmanSmoother, EstimatesTheTinyMissionAndItsMine) {
   EXPECT_NEAR(r.mine_mean[0], t.mission.truth_mines[0], 5.0);
   EXPECT_NEAR(r.mine_mean[1], t.mission.truth_mines[1], 5.0);
   for (int a = 0; a < 3; ++a) EXPECT_GT(r.covariance[static_cast<std::size_t>(4 * a)], 0.0);
+}
+
+// Without biases the smoother linearises the odometry once, by its dead reckoning, and
+// adds those steps again at every pass (FactorSet::odometry, then reset_keeping_steps,
+// add_steps_again and FactorSet::without_odometry): the system solved must be, bit for
+// bit, the one of every factor linearised at the pass's point, as before that saving.
+TEST(KalmanSmoother, TheOdometryKeptIsTheOdometryLinearisedAgain) {
+  const test::TinyMission t = test::make_tiny_mission(3, test::TinyErrors::uniform);
+  const Mission& m = t.mission;
+  const std::size_t n = m.size(), mines = static_cast<std::size_t>(m.mine_count);
+  // A linearisation point away from the dead reckoning: the truth, shifted.
+  KalmanLinearisation point;
+  for (std::size_t k = 0; k < n; ++k) point.position.push_back(Vec3d(m.truth_x[k] + 3.0, m.truth_y[k] - 2.0, m.truth_z[k]));
+  point.mine.assign(mines, Vec3d::Zero());
+  point.mine_known.assign(mines, 0);
+  const auto prior = [](ArrowheadChain& chain) { chain.add_position(0, Mat3d::Identity() * 1e-10, Vec3d::Zero()); };
+
+  ArrowheadChain kept(n, 3 * mines);
+  struct KeepSteps final : MeasurementSink {
+    ArrowheadChain& chain;
+    std::vector<Vec3d> delta;
+    explicit KeepSteps(ArrowheadChain& c) : chain(c) {}
+    void odometry(std::size_t k, const Mat3d& information, const Vec3d& step, const BiasJacobian&) override {
+      chain.add_step(k, information, step);
+      delta.push_back(step);
+    }
+    void scalar(std::size_t, const Eigen::RowVector3d&, int, const Eigen::RowVector3d&, const BiasRow&, double, double,
+                const ConstraintRef*) override {}
+  } keep(kept);
+  KalmanLinearisation lin_kept = point;
+  linearise_measurements(m, m.model, t.fixes, {1.0, false, FactorSet::odometry}, lin_kept, keep);
+  for (int pass = 0; pass < 2; ++pass) {  // (the second pass at the first one's estimate)
+    kept.reset_keeping_steps();
+    prior(kept);
+    kept.add_steps_again(keep.delta);
+    ChainBuilder kept_builder(kept, mines, false, BiasVec::Zero());
+    linearise_measurements(m, m.model, t.fixes, {1.0, false, FactorSet::without_odometry}, lin_kept, kept_builder);
+    kept.solve();
+
+    ArrowheadChain again(n, 3 * mines);
+    prior(again);
+    ChainBuilder builder(again, mines, false, BiasVec::Zero());
+    KalmanLinearisation lin_again = lin_kept;
+    if (pass == 0) lin_again = point;
+    linearise_measurements(m, m.model, t.fixes, {1.0, false, FactorSet::all}, lin_again, builder);
+    again.solve();
+    for (std::size_t k = 0; k < n; ++k) {
+      ASSERT_EQ(kept.mean(k), again.mean(k)) << "pass " << pass << ", step " << k;
+      ASSERT_EQ(kept.covariance(k), again.covariance(k)) << "pass " << pass << ", step " << k;
+    }
+    EXPECT_EQ(kept.static_mean(), again.static_mean());
+    EXPECT_EQ(kept.static_covariance(), again.static_covariance());
+    for (std::size_t k = 0; k < n; ++k) lin_kept.position[k] = kept.mean(k);
+  }
 }
 
 TEST(KalmanSmoother, ReportsItsContainmentOnSimulatedMissions) {
