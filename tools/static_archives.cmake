@@ -4,8 +4,8 @@
 # and cairo loads X11's; with them `gesmi --help` took 15 ms of CPU, 58 libraries. The
 # gesmi command links instead the static archives Debian ships in the same -dev packages
 # (same versions), down to compression and fonts: the linker takes only the objects
-# gesmi calls, and --as-needed drops the shared libraries nothing refers to any more. The Python module and the tests keep
-# the shared libraries (a static HDF5 next to h5py's shared one in one process would be
+# gesmi calls, and --as-needed drops the shared libraries nothing refers to any more.
+# The Python module and the tests keep the shared libraries (a static HDF5 next to h5py's shared one in one process would be
 # two HDF5 libraries). GESMI_STATIC_ARCHIVES=OFF links everything shared.
 option(GESMI_STATIC_ARCHIVES "link the gesmi command with the static archives of its dependencies" ON)
 
@@ -18,16 +18,16 @@ function(gesmi_link_static_archives target)
   endif()
   get_filename_component(hdf5_dir "${HDF5_C_LIBRARY_hdf5}" DIRECTORY)
   # In link order: each archive before the libraries it calls.
-  set(archives)
-  # Fonts and compression: static too, but shared under the sanitizers, whose leak
-  # suppression names libfontconfig.so (docs/sanitizers.md).
-  set(fonts_and_compression "fontconfig" "freetype" "png16" "brotlidec" "brotlicommon" "bz2" "expat" "crypto" "sz"
-                            "aec" "z")
+  set(entries "boost_program_options" "hdf5:${hdf5_dir}" "yaml-cpp" "GeographicLib" "cairo" "pixman-1" "fontconfig"
+              "freetype" "png16" "brotlidec" "brotlicommon" "bz2" "expat" "crypto" "sz" "aec" "z")
+  # Fonts and compression stay shared under the sanitizers, whose leak suppression names
+  # libfontconfig.so (docs/sanitizers.md).
+  set(shared_under_sanitizers "fontconfig" "freetype" "brotlidec" "brotlicommon" "bz2" "expat" "sz" "aec" "z")
   if(GESMI_SANITIZE)
-    set(fonts_and_compression "png16" "crypto")
+    list(REMOVE_ITEM entries ${shared_under_sanitizers})
   endif()
-  foreach(entry IN ITEMS "boost_program_options" "hdf5:${hdf5_dir}" "yaml-cpp" "GeographicLib" "cairo" "pixman-1"
-                         ${fonts_and_compression})
+  set(archives)
+  foreach(entry IN LISTS entries)
     string(REPLACE ":" ";" parts "${entry}")
     list(GET parts 0 name)
     list(LENGTH parts count)
@@ -46,11 +46,11 @@ function(gesmi_link_static_archives target)
   endforeach()
   target_link_options(${target} PRIVATE -Wl,--as-needed)
   target_link_libraries(${target} PRIVATE ${archives} ${CMAKE_DL_LIBS} Threads::Threads)
-  # Otherwise the C++ runtime static too, and no position-independent executable:
-  # libstdc++'s loading and symbol lookups and the 20,000 relative relocations of a PIE
-  # were 2.6 of the 8.5 ms `gesmi --version` took, the shared fonts and compression 1.2
-  # (docs/performance.md, "Start-up"). Under the sanitizers the C++ runtime stays shared:
-  # theirs replaces the C++ allocation functions.
+  # The C++ runtime static too, and no position-independent executable: libstdc++'s
+  # loading and symbol lookups and the 20,000 relative relocations of a PIE were 2.6 of
+  # the 8.5 ms `gesmi --version` took, the shared fonts and compression 1.2
+  # (docs/performance.md, "Start-up"). Under the sanitizers the C++ runtime stays shared
+  # (theirs replaces the C++ allocation functions), as do fonts and compression.
   if(GESMI_SANITIZE)
     pkg_check_modules(GESMI_FONTS REQUIRED IMPORTED_TARGET fontconfig freetype2)
     target_link_libraries(${target} PRIVATE ${HDF5_C_LIBRARY_sz} PkgConfig::GESMI_FONTS ${HDF5_C_LIBRARY_z})
