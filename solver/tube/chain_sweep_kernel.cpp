@@ -9,12 +9,22 @@
 // empty result (lo > hi) stops the sweep and is normalised by the caller.
 
 #include <algorithm>
+#include <type_traits>
 
 #include "solver/interval/upward_rounding.h"
 #include "solver/tube/chain_sweep.h"
 
 namespace gesmi {
 namespace {
+
+constexpr int kChains = 3;
+
+// The arrays of the three chains (v const for the forward sweep).
+template <class Step>
+struct ChainArrays {
+  Interval* x[kChains];
+  Step* v[kChains];
+};
 
 // The loop-carried values are the negated lower bound and the upper bound, so the
 // dependency chain is one rounded-up addition and one min per step. The largest
@@ -57,6 +67,75 @@ namespace {
     }
   }
   max_shrink = shrink;
+  return SweepResult::kNone;
+}
+
+// The three chains of a tube swept in one loop: the same operations, chain by chain,
+// as the loops above, but the three chains' loop-carried dependencies overlap (each
+// chain's narrowing tracked apart, so that no dependency runs across them). Stops at
+// the first step where some chain emptied and sets that step's chains in `emptied`.
+[[gnu::noinline]] std::size_t forward_loop3(const ChainArrays<const Interval>& c, std::size_t n, double (&max_shrink)[kChains],
+                                            unsigned& emptied) {
+  Interval* x[kChains] = {c.x[0], c.x[1], c.x[2]};  // (copies: not reloaded after each store)
+  const Interval* v[kChains] = {c.v[0], c.v[1], c.v[2]};
+  double neg_lo[kChains], hi[kChains], shrink[kChains];
+  for (int a = 0; a < kChains; ++a) {
+    neg_lo[a] = -x[a][0].lo();
+    hi[a] = x[a][0].hi();
+    shrink[a] = 0.0;
+  }
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    unsigned empty_now = 0;
+#pragma GCC unroll 3
+    for (int a = 0; a < kChains; ++a) {
+      const Interval old = x[a][k + 1];
+      neg_lo[a] = std::min(-old.lo(), neg_lo[a] - v[a][k].lo());
+      hi[a] = std::min(old.hi(), hi[a] + v[a][k].hi());
+      x[a][k + 1] = Interval::from_bounds(-neg_lo[a], hi[a]);
+      shrink[a] = std::max(shrink[a], std::max(-neg_lo[a] - old.lo(), old.hi() - hi[a]));
+      empty_now |= static_cast<unsigned>(!(-neg_lo[a] <= hi[a])) << a;
+    }
+    if (empty_now != 0) {
+      emptied = empty_now;
+      return k + 1;
+    }
+  }
+  for (int a = 0; a < kChains; ++a) max_shrink[a] = shrink[a];
+  return SweepResult::kNone;
+}
+
+[[gnu::noinline]] std::size_t backward_loop3(const ChainArrays<Interval>& c, std::size_t n, double (&max_shrink)[kChains],
+                                             unsigned& emptied) {
+  Interval* x[kChains] = {c.x[0], c.x[1], c.x[2]};  // (copies: not reloaded after each store)
+  Interval* v[kChains] = {c.v[0], c.v[1], c.v[2]};
+  double neg_lo[kChains], hi[kChains], shrink[kChains];
+  for (int a = 0; a < kChains; ++a) {
+    neg_lo[a] = -x[a][n - 1].lo();
+    hi[a] = x[a][n - 1].hi();
+    shrink[a] = 0.0;
+  }
+  for (std::size_t k = n - 1; k-- > 0;) {
+    unsigned empty_now = 0;
+#pragma GCC unroll 3
+    for (int a = 0; a < kChains; ++a) {
+      const double next_neg_lo = neg_lo[a], next_hi = hi[a];
+      const Interval old = x[a][k];
+      const Interval step = v[a][k];
+      neg_lo[a] = std::min(-old.lo(), next_neg_lo + step.hi());  // -max(lo, RD(next.lo - v.hi))
+      hi[a] = std::min(old.hi(), next_hi - step.lo());           // min(hi, RU(next.hi - v.lo))
+      x[a][k] = Interval::from_bounds(-neg_lo[a], hi[a]);
+      shrink[a] = std::max(shrink[a], std::max(-neg_lo[a] - old.lo(), old.hi() - hi[a]));
+      const double step_lo = std::max(step.lo(), -(hi[a] + next_neg_lo));  // RD(next.lo - hi)
+      const double step_hi = std::min(step.hi(), next_hi + neg_lo[a]);      // RU(next.hi - lo)
+      v[a][k] = Interval::from_bounds(step_lo, step_hi);
+      empty_now |= static_cast<unsigned>(!(-neg_lo[a] <= hi[a]) || !(step_lo <= step_hi)) << a;
+    }
+    if (empty_now != 0) {
+      emptied = empty_now;
+      return k;
+    }
+  }
+  for (int a = 0; a < kChains; ++a) max_shrink[a] = shrink[a];
   return SweepResult::kNone;
 }
 
@@ -183,6 +262,109 @@ SweepResult chain_forward_from(std::span<Interval> x, std::span<const Interval> 
 
 SweepResult chain_backward_from(std::span<Interval> x, std::span<Interval> v, std::size_t from, double stop_below) {
   return spread_backward(x, v, from, stop_below);
+}
+
+namespace {
+
+// The chains one after the other: for lengths the joint loop does not take.
+template <class Steps, class Sweep>
+ChainsSweepResult one_by_one(const std::array<std::span<Interval>, kChains>& x, const std::array<Steps, kChains>& v,
+                             Sweep sweep) {
+  ChainsSweepResult result;
+  for (int a = 0; a < kChains; ++a) {
+    const SweepResult r = sweep(x[a], v[a]);
+    if (!r.consistent()) return ChainsSweepResult{r, a};
+    result.sweep.max_shrink = std::max(result.sweep.max_shrink, r.max_shrink);
+    result.sweep.last = r.last;
+  }
+  return result;
+}
+
+template <class Steps>
+bool same_lengths(const std::array<std::span<Interval>, kChains>& x, const std::array<Steps, kChains>& v) {
+  const std::size_t n = x[0].size();
+  if (n < 2) return false;
+  for (int a = 0; a < kChains; ++a)
+    if (x[a].size() != n || v[a].size() + 1 != n) return false;
+  return true;
+}
+
+// After the joint loop stopped at step `at`, where the chains in `emptied` emptied:
+// the chains before the first of those go on alone, as chain_forward/chain_backward
+// would have swept them before reaching it; the first chain found empty is the result.
+// Every chain emptied at `at` is normalised.
+template <class Steps, class Rest>
+ChainsSweepResult first_emptied(const std::array<std::span<Interval>, kChains>& x, const std::array<Steps, kChains>& v,
+                                std::size_t at, unsigned emptied, Rest rest) {
+  ChainsSweepResult result;
+  for (int a = 0; a < kChains && result.chain < 0; ++a) {
+    std::size_t first_empty = at;
+    if (!(emptied >> a & 1)) {
+      UpwardRounding upward;
+      first_empty = rest(a);
+    }
+    if (first_empty != SweepResult::kNone) result = ChainsSweepResult{SweepResult{first_empty, kInf, first_empty}, a};
+  }
+  for (int a = 0; a < kChains; ++a)
+    if (emptied >> a & 1 || a == result.chain) {
+      const std::size_t k = a == result.chain ? result.sweep.first_empty : at;
+      if (x[a][k].is_empty()) x[a][k] = Interval::empty();
+      if constexpr (!std::is_const_v<typename Steps::element_type>)
+        if (k < v[a].size() && v[a][k].is_empty()) v[a][k] = Interval::empty();
+    }
+  return result;
+}
+
+}  // namespace
+
+ChainsSweepResult chains_forward(const std::array<std::span<Interval>, 3>& x,
+                                 const std::array<std::span<const Interval>, 3>& v) {
+  bool together = same_lengths(x, v);
+  for (int a = 0; together && a < kChains; ++a) together = !x[a][0].is_empty();
+  if (!together) return one_by_one(x, v, chain_forward);
+  const std::size_t n = x[0].size();
+  const ChainArrays<const Interval> c{{x[0].data(), x[1].data(), x[2].data()}, {v[0].data(), v[1].data(), v[2].data()}};
+  double shrink[kChains];
+  unsigned emptied = 0;
+  std::size_t at;
+  {
+    UpwardRounding upward;
+    at = forward_loop3(c, n, shrink, emptied);
+  }
+  if (at != SweepResult::kNone) {
+    return first_emptied(x, v, at, emptied, [&](int a) {
+      double rest_shrink;
+      const std::size_t e = full_forward_loop(c.x[a] + at, c.v[a] + at, n - at, rest_shrink);
+      return e == SweepResult::kNone ? e : at + e;
+    });
+  }
+  ChainsSweepResult result;
+  result.sweep.max_shrink = std::max({shrink[0], shrink[1], shrink[2]});
+  result.sweep.last = n - 1;
+  return result;
+}
+
+ChainsSweepResult chains_backward(const std::array<std::span<Interval>, 3>& x, const std::array<std::span<Interval>, 3>& v) {
+  if (!same_lengths(x, v)) return one_by_one(x, v, chain_backward);
+  const std::size_t n = x[0].size();
+  const ChainArrays<Interval> c{{x[0].data(), x[1].data(), x[2].data()}, {v[0].data(), v[1].data(), v[2].data()}};
+  double shrink[kChains];
+  unsigned emptied = 0;
+  std::size_t at;
+  {
+    UpwardRounding upward;
+    at = backward_loop3(c, n, shrink, emptied);
+  }
+  if (at != SweepResult::kNone) {
+    return first_emptied(x, v, at, emptied, [&](int a) {
+      double rest_shrink;
+      return full_backward_loop(c.x[a], c.v[a], at + 1, rest_shrink);
+    });
+  }
+  ChainsSweepResult result;
+  result.sweep.max_shrink = std::max({shrink[0], shrink[1], shrink[2]});
+  result.sweep.last = 0;
+  return result;
 }
 
 }  // namespace gesmi

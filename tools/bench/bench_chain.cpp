@@ -4,6 +4,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <array>
+#include <span>
 #include <vector>
 
 #include "solver/tube/chain_sweep.h"
@@ -57,7 +59,37 @@ void BM_ChainBackwardPortable(benchmark::State& s) {
   backward<gesmi::chain_forward_portable, gesmi::chain_backward_portable>(s);
 }
 
+// The three chains of a tube: one after the other, and together (chains_forward,
+// chains_backward), one forward and one backward sweep each.
+template <bool Together>
+void three_chains(benchmark::State& state) {
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  Chain a(n), b(n), c(n);
+  const std::array<std::span<Interval>, 3> x{a.x, b.x, c.x};
+  const std::array<std::span<Interval>, 3> v{a.v, b.v, c.v};
+  const std::array<std::span<const Interval>, 3> v_const{a.v, b.v, c.v};
+  for (auto _ : state) {
+    state.PauseTiming();
+    for (Chain* chain : {&a, &b, &c}) std::fill(chain->x.begin() + 1, chain->x.end() - 1, Interval::entire());
+    state.ResumeTiming();
+    if constexpr (Together) {
+      benchmark::DoNotOptimize(gesmi::chains_forward(x, v_const));
+      benchmark::DoNotOptimize(gesmi::chains_backward(x, v));
+    } else {
+      for (int i = 0; i < 3; ++i) benchmark::DoNotOptimize(gesmi::chain_forward(x[i], v[i]));
+      for (int i = 0; i < 3; ++i) benchmark::DoNotOptimize(gesmi::chain_backward(x[i], v[i]));
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * 3 * (n - 1)));
+}
+
+void BM_ThreeChainsOneByOne(benchmark::State& s) { three_chains<false>(s); }
+void BM_ThreeChainsTogether(benchmark::State& s) { three_chains<true>(s); }
+
 BENCHMARK(BM_ChainForward)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ThreeChainsOneByOne)->Arg(60000)->Arg(kSteps)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ThreeChainsTogether)->Arg(60000)->Arg(kSteps)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ChainForwardPortable)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ChainBackward)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ChainBackwardPortable)->Unit(benchmark::kMillisecond);

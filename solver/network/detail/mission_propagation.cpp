@@ -11,16 +11,16 @@ std::optional<double> MissionPropagation::sweep(std::optional<Inconsistency>& fa
 }
 
 bool MissionPropagation::chains(bool forward, double& move, std::optional<Inconsistency>& failure) {
-  for (int axis = 0; axis < 3; ++axis) {
-    std::vector<Interval>& p = *positions()[axis];
-    std::vector<Interval>& inc = *increments()[axis];
-    const SweepResult r = forward ? chain_forward(p, inc) : chain_backward(p, inc);
-    if (!r.consistent()) {
-      failure = evolution_failure(axis, r.first_empty, forward);
-      return false;
-    }
-    move = std::max(move, r.max_shrink);
+  const std::array<std::span<Interval>, 3> p{d_.px, d_.py, d_.pz};
+  const ChainsSweepResult r =
+      forward ? chains_forward(p, {std::span<const Interval>(d_.dx), std::span<const Interval>(d_.dy),
+                                   std::span<const Interval>(d_.dz)})
+              : chains_backward(p, {std::span<Interval>(d_.dx), std::span<Interval>(d_.dy), std::span<Interval>(d_.dz)});
+  if (!r.consistent()) {
+    failure = evolution_failure(r.chain, r.sweep.first_empty, forward);
+    return false;
   }
+  move = std::max(move, r.sweep.max_shrink);
   return true;
 }
 

@@ -5,7 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
 #include <random>
+#include <span>
 #include <vector>
 
 namespace gesmi {
@@ -133,6 +138,129 @@ TEST(ChainSweep, SpreadFromAChangedPointMatchesFullSweeps) {
   EXPECT_GT(f.last, k);
   EXPECT_LT(b.last, k);
   for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(spread[i], full[i]) << i;
+}
+
+}  // namespace
+}  // namespace gesmi
+
+namespace gesmi {
+namespace {
+
+// The three chains of a tube, each with priors here and there and a few fixes: what
+// the joint sweeps must leave, bit for bit, is what one sweep per chain leaves.
+struct ThreeChains {
+  std::array<std::vector<Interval>, 3> x, v;
+  ThreeChains(std::mt19937_64& rng, std::size_t n) {
+    std::uniform_real_distribution<double> wide(5.0, 50.0);
+    for (int a = 0; a < 3; ++a) {
+      v[static_cast<std::size_t>(a)] = random_steps(rng, n - 1);
+      std::vector<Interval>& chain = x[static_cast<std::size_t>(a)];
+      chain.assign(n, Interval::entire());
+      double centre = 0.0;
+      for (std::size_t k = 0; k < n; ++k) {
+        if (k > 0) centre += v[static_cast<std::size_t>(a)][k - 1].mid();
+        if (k % 89 == 0) chain[k] = Interval(centre - wide(rng), centre + wide(rng));  // a prior here and there
+        // Two narrow fixes in a row: narrower than the step between them, which they narrow.
+        if (k % 97 == 0 || k % 97 == 1) chain[k] = Interval(centre - 0.005, centre + 0.005);
+      }
+      chain[0] = Interval(-0.5, 0.5);
+      chain[n - 1] = Interval(centre - 1.0, centre + 1.0);  // a final fix
+    }
+  }
+  std::array<std::span<Interval>, 3> positions() { return {x[0], x[1], x[2]}; }
+  std::array<std::span<Interval>, 3> steps() { return {v[0], v[1], v[2]}; }
+  std::array<std::span<const Interval>, 3> steps_const() { return {v[0], v[1], v[2]}; }
+};
+
+void expect_bitwise_equal(const std::vector<Interval>& a, const std::vector<Interval>& b, const char* what) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(a[i].lo()), std::bit_cast<std::uint64_t>(b[i].lo())) << what << " " << i;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(a[i].hi()), std::bit_cast<std::uint64_t>(b[i].hi())) << what << " " << i;
+  }
+}
+
+TEST(ChainSweep, ThreeChainsTogetherAreThreeSweepsBitForBit) {
+  std::mt19937_64 rng(19);
+  for (const std::size_t n : {std::size_t{2}, std::size_t{3}, std::size_t{5000}}) {
+    ThreeChains together(rng, n);
+    ThreeChains one_by_one = together;
+    const ChainsSweepResult f = chains_forward(together.positions(), together.steps_const());
+    const ChainsSweepResult b = chains_backward(together.positions(), together.steps());
+    double forward_shrink = 0.0, backward_shrink = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      const auto i = static_cast<std::size_t>(a);
+      const SweepResult fa = chain_forward(one_by_one.x[i], one_by_one.v[i]);
+      ASSERT_TRUE(fa.consistent());
+      forward_shrink = std::max(forward_shrink, fa.max_shrink);
+    }
+    for (int a = 0; a < 3; ++a) {
+      const auto i = static_cast<std::size_t>(a);
+      const SweepResult ba = chain_backward(one_by_one.x[i], one_by_one.v[i]);
+      ASSERT_TRUE(ba.consistent());
+      backward_shrink = std::max(backward_shrink, ba.max_shrink);
+    }
+    ASSERT_TRUE(f.consistent() && b.consistent()) << n;
+    EXPECT_EQ(f.sweep.max_shrink, forward_shrink) << n;
+    EXPECT_EQ(b.sweep.max_shrink, backward_shrink) << n;
+    for (std::size_t i = 0; i < 3; ++i) {
+      expect_bitwise_equal(together.x[i], one_by_one.x[i], "position");
+      expect_bitwise_equal(together.v[i], one_by_one.v[i], "step");
+    }
+  }
+}
+
+// Chains that empty: the result names the first chain, in axis order, that a sweep per
+// chain finds empty, and where; the chains before it are swept whole, as one by one.
+TEST(ChainSweep, ThreeChainsTogetherNameTheFirstChainThatEmpties) {
+  struct Case {
+    std::array<std::size_t, 3> empty_at;  // the sample made impossible on each chain (0: none)
+    int chain;
+    std::size_t first_empty;
+  };
+  const std::size_t n = 3000;
+  // A later chain emptying earlier does not hide an earlier chain emptying later.
+  for (const Case& c : {Case{{0, 700, 0}, 1, 700}, Case{{2000, 700, 0}, 0, 2000}, Case{{0, 2500, 300}, 1, 2500},
+                        Case{{0, 0, 1200}, 2, 1200}, Case{{900, 900, 900}, 0, 900}}) {
+    for (const bool forward : {true, false}) {
+      std::mt19937_64 rng(23);
+      ThreeChains together(rng, n);
+      for (std::size_t a = 0; a < 3; ++a) {
+        if (c.empty_at[a] == 0) continue;
+        // A prior far beyond what the steps allow from either end.
+        const std::size_t k = c.empty_at[a];
+        together.x[a][k] = Interval(1e6, 1e6 + 1.0);
+      }
+      ThreeChains one_by_one = together;
+      const ChainsSweepResult r = forward ? chains_forward(together.positions(), together.steps_const())
+                                          : chains_backward(together.positions(), together.steps());
+      ASSERT_FALSE(r.consistent());
+      // The expected: sweeps chain by chain, stopping at the first that empties.
+      int chain = -1;
+      std::size_t first_empty = 0;
+      for (std::size_t a = 0; a < 3 && chain < 0; ++a) {
+        const SweepResult s = forward ? chain_forward(one_by_one.x[a], one_by_one.v[a])
+                                      : chain_backward(one_by_one.x[a], one_by_one.v[a]);
+        if (!s.consistent()) {
+          chain = static_cast<int>(a);
+          first_empty = s.first_empty;
+        }
+      }
+      EXPECT_EQ(r.chain, chain) << forward;
+      EXPECT_EQ(r.sweep.first_empty, first_empty) << forward;
+      if (forward) {  // (backward, the sample made impossible is found from the end)
+        EXPECT_EQ(r.chain, c.chain);
+        EXPECT_EQ(r.sweep.first_empty, c.first_empty);
+      }
+      EXPECT_EQ(r.sweep.max_shrink, kInf);
+      for (int a = 0; a <= chain; ++a) {
+        const auto i = static_cast<std::size_t>(a);
+        expect_bitwise_equal(together.x[i], one_by_one.x[i], "position");
+        expect_bitwise_equal(together.v[i], one_by_one.v[i], "step");
+      }
+      EXPECT_TRUE(together.x[static_cast<std::size_t>(chain)][first_empty].is_empty());
+    }
+  }
 }
 
 }  // namespace
