@@ -68,15 +68,25 @@ inline double two_sum_error(double a, double b, double r) {
   return (a - (r - bb)) + (b - bb);
 }
 
+// r moved one double up (direction +1) or down (-1) when `step`, else r itself; r is
+// finite, and nonzero when `step` (a sum that rounds to zero is exact). Branch-free:
+// whether the error points outward is data, and a mispredicted branch on it cost more
+// than the sum (measured: the frame margins' loops, docs/performance.md).
+inline double step_finite_if(double r, bool step, std::int64_t direction) {
+  const auto bits = std::bit_cast<std::int64_t>(r);
+  const std::int64_t up = (bits >> 63) | 1;  // the bits' move up: +1 for r >= 0, -1 below (as next_up)
+  return std::bit_cast<double>(bits + (direction * up & -static_cast<std::int64_t>(step)));
+}
+
 inline double add_down(double a, double b) {
   const double r = a + b;
   if (!std::isfinite(r)) return r == kInf && std::isfinite(a) && std::isfinite(b) ? std::numeric_limits<double>::max() : r;
-  return two_sum_error(a, b, r) >= 0.0 ? r : next_down(r);  // a NaN error term steps too
+  return step_finite_if(r, !(two_sum_error(a, b, r) >= 0.0), -1);  // (next_down(r) when stepping)
 }
 inline double add_up(double a, double b) {
   const double r = a + b;
   if (!std::isfinite(r)) return r == -kInf && std::isfinite(a) && std::isfinite(b) ? -std::numeric_limits<double>::max() : r;
-  return two_sum_error(a, b, r) <= 0.0 ? r : next_up(r);
+  return step_finite_if(r, !(two_sum_error(a, b, r) <= 0.0), 1);  // (next_up(r) when stepping)
 }
 inline double sub_down(double a, double b) { return add_down(a, -b); }
 inline double sub_up(double a, double b) { return add_up(a, -b); }

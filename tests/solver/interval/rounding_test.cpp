@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cfenv>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -56,6 +57,39 @@ TEST(Rounding, DirectedSumsBracketTheExactSumWithinOneStep) {
     else ASSERT_EQ(next_up(lo), hi) << a << " + " << b;
     ASSERT_EQ(sub_down(a, -b), lo);
     ASSERT_EQ(sub_up(a, -b), hi);
+  }
+}
+
+// A second oracle for sums: the processor's own directed rounding modes, over doubles of
+// every sign and magnitude (subnormals, zeros, near overflow), not only short ones.
+double sum_rounded(double a, double b, int mode) {
+  const int before = std::fegetround();
+  std::fesetround(mode);
+  volatile double x = a, y = b;  // (computed here, at run time, in that mode)
+  const double sum = x + y;
+  std::fesetround(before);
+  return sum;
+}
+
+TEST(Rounding, DirectedSumsAreTheProcessorsDirectedRoundings) {
+  std::mt19937_64 rng(17);
+  std::uniform_int_distribution<int> kind(0, 3);
+  const auto any_double = [&] {
+    switch (kind(rng)) {
+      case 0: return short_double(rng, 53, 1070);                 // subnormal to huge
+      case 1: return short_double(rng, 53, 4);                    // ordinary
+      case 2: return std::ldexp(short_double(rng, 53, 2), -1060);  // subnormal
+      default: return rng() & 1 ? 0.0 : -0.0;
+    }
+  };
+  for (int i = 0; i < 400000; ++i) {
+    const double a = any_double();
+    const double b = i % 3 == 0 ? -a * (1.0 + std::ldexp(short_double(rng, 20, 0), -40)) : any_double();  // near cancellation
+    const double up = sum_rounded(a, b, FE_UPWARD), down = sum_rounded(a, b, FE_DOWNWARD);
+    if (!std::isfinite(up) || !std::isfinite(down)) continue;  // (overflow: OverflowGoesToMaxOrInfinityByDirection)
+    // (as numbers: an exact zero sum is +0 here, -0 rounded downward)
+    ASSERT_EQ(add_up(a, b), up) << a << " + " << b;
+    ASSERT_EQ(add_down(a, b), down) << a << " + " << b;
   }
 }
 
