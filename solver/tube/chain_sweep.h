@@ -37,11 +37,10 @@ SweepResult chain_backward(std::span<Interval> x, std::span<Interval> v);
 
 /// The three chains of a tube (one per axis) swept together: one loop over the three,
 /// about 15 % faster than three sweeps (docs/performance.md). Each chain ends bit for
-/// bit as chain_forward
-/// (chain_backward) leaves it, up to the first chain, in axis order, that empties:
-/// that one is the result, and the chains after it may be left partly swept (as if
-/// the sweeps had stopped at it, only not before them). Otherwise the result is the
-/// largest narrowing over the three.
+/// bit as chain_forward (chain_backward) leaves it, up to the first chain, in axis
+/// order, that empties: that one is the result, as one sweep per chain would find it.
+/// The chains after it may be left partly swept (those that emptied at the same step
+/// normalised). Otherwise the result is the largest narrowing over the three.
 struct ChainsSweepResult {
   SweepResult sweep;
   int chain = -1;  // the chain that emptied, or -1

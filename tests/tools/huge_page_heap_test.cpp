@@ -108,6 +108,7 @@ TEST(HugePageHeap, TheHeapsFirstHugePageIsLeftUntouched) {
     GTEST_SKIP() << "this kernel has no transparent huge pages";
   if (!present(reinterpret_cast<std::uintptr_t>(&sanitized)))
     GTEST_SKIP() << "the kernel does not say which pages are in memory";
+  const std::string style = GTEST_FLAG_GET(death_test_style);
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   EXPECT_EXIT(
       {
@@ -124,6 +125,7 @@ TEST(HugePageHeap, TheHeapsFirstHugePageIsLeftUntouched) {
         std::_Exit(block != nullptr && touched == 0 ? 0 : 1);
       },
       ::testing::ExitedWithCode(0), "");
+  GTEST_FLAG_SET(death_test_style, style);
 }
 
 // Blocks beyond the heap's 32 MiB get a marked mapping of their own, returned when freed.

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 
 #include "tools/gesmi/huge_page_blocks.h"
 
@@ -29,8 +30,24 @@ constexpr int kDefaultMmapMax = 65536;  // mallopt(3)
 
 }  // namespace
 
+namespace {
+
+// Whether glibc fills blocks on malloc and free (MALLOC_PERTURB_, glibc.malloc.perturb):
+// the reserve's block would then be written whole, in small pages, at every start.
+bool malloc_perturbs() {
+  const char* perturb = std::getenv("MALLOC_PERTURB_");
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  return (perturb != nullptr && std::atoi(perturb) != 0) ||
+         (tunables != nullptr && std::strstr(tunables, "glibc.malloc.perturb") != nullptr);
+}
+
+}  // namespace
+
 void use_huge_page_heap() {
   use_huge_page_blocks();  // the blocks too large for the heap
+#if defined(__SANITIZE_ADDRESS__)
+  return;  // ASan's allocator has no program break to grow (and would poison the reserve's block)
+#endif
   // Blocks up to 32 MiB come from the heap (not a fresh mmap each, which faults again
   // after every free), and the heap is never given back before exit.
   mallopt(M_MMAP_THRESHOLD, static_cast<int>(kHugePageBlock));
@@ -51,13 +68,17 @@ void use_huge_page_heap() {
   //   not mapped apart, so the free top's header is left at the far end.
   const auto break_now = reinterpret_cast<std::uintptr_t>(sbrk(0));
   const std::uintptr_t top = ((break_now + page + kHugePage - 1) & ~(kHugePage - 1)) - page;
+  if (malloc_perturbs()) return;  // (the heap stays in small pages)
   if (top > break_now) sbrk(static_cast<intptr_t>(top - break_now));  // (refused: as before)
   mallopt(M_MMAP_MAX, 0);
   void* probe = std::malloc(kHeapReserve);
+  // (glibc's default: a value set through MALLOC_MMAP_MAX_ cannot be read back)
   mallopt(M_MMAP_MAX, kDefaultMmapMax);
   const auto after = reinterpret_cast<std::uintptr_t>(sbrk(0));
   std::free(probe);
-  if (probe == nullptr || after <= start + kHugePage) return;  // too little heap to mark (ASan, or brk refused)
+  // Too little heap to mark: brk refused (glibc then maps the block apart, and the heap
+  // goes on in small pages), or the reserve refused (strict overcommit, a data limit).
+  if (probe == nullptr || after <= start + kHugePage) return;
   madvise(reinterpret_cast<void*>(start), after - start, MADV_HUGEPAGE);
 }
 

@@ -61,12 +61,14 @@ TEST(Rounding, DirectedSumsBracketTheExactSumWithinOneStep) {
 }
 
 // A second oracle for sums: the processor's own directed rounding modes, over doubles of
-// every sign and magnitude (subnormals, zeros, near overflow), not only short ones.
+// every sign and magnitude (subnormals, zeros, huge), not only short ones; sums that
+// overflow are OverflowGoesToMaxOrInfinityByDirection's, and zeros are compared as
+// numbers.
 double sum_rounded(double a, double b, int mode) {
   const int before = std::fegetround();
   std::fesetround(mode);
   volatile double x = a, y = b;  // (computed here, at run time, in that mode)
-  const double sum = x + y;
+  const volatile double sum = x + y;
   std::fesetround(before);
   return sum;
 }
@@ -153,6 +155,11 @@ TEST(Rounding, OverflowGoesToMaxOrInfinityByDirection) {
   EXPECT_EQ(mul_up(kMax, 2.0), kInf);
   EXPECT_EQ(div_down(kMax, 0.5), kMax);
   EXPECT_EQ(div_up(-kMax, 0.5), -kMax);
+  // A finite sum that rounds to max steps to infinity on its outward side only.
+  EXPECT_EQ(add_up(kMax, 1.0), kInf);
+  EXPECT_EQ(add_down(kMax, 1.0), kMax);
+  EXPECT_EQ(add_down(-kMax, -1.0), -kInf);
+  EXPECT_EQ(add_up(-kMax, -1.0), -kMax);
   EXPECT_EQ(add_down(kInf, 1.0), kInf);  // infinite bounds are kept
   EXPECT_EQ(add_up(-kInf, 1.0), -kInf);
 }

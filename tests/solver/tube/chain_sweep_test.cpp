@@ -221,7 +221,9 @@ TEST(ChainSweep, ThreeChainsTogetherNameTheFirstChainThatEmpties) {
   const std::size_t n = 3000;
   // A later chain emptying earlier does not hide an earlier chain emptying later.
   for (const Case& c : {Case{{0, 700, 0}, 1, 700}, Case{{2000, 700, 0}, 0, 2000}, Case{{0, 2500, 300}, 1, 2500},
-                        Case{{0, 0, 1200}, 2, 1200}, Case{{900, 900, 900}, 0, 900}}) {
+                        Case{{0, 0, 1200}, 2, 1200}, Case{{900, 900, 900}, 0, 900},
+                        // backward, chain 1 empties first (from the end), chain 0 later:
+                        Case{{700, 2000, 0}, 0, 700}}) {
     for (const bool forward : {true, false}) {
       std::mt19937_64 rng(23);
       ThreeChains together(rng, n);
