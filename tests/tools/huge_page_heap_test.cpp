@@ -72,8 +72,17 @@ bool sanitized() {
 #endif
 }
 
+// glibc told to fill blocks: the policy leaves the heap alone (huge_page_heap.cpp).
+bool perturbed() {
+  const char* perturb = std::getenv("MALLOC_PERTURB_");
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  return (perturb != nullptr && std::atoi(perturb) != 0) ||
+         (tunables != nullptr && std::string(tunables).find("glibc.malloc.perturb") != std::string::npos);
+}
+
 TEST(HugePageHeap, MarksTheHeapAndLaterBlocksComeFromIt) {
   if (sanitized()) GTEST_SKIP() << "ASan replaces malloc";
+  if (perturbed()) GTEST_SKIP() << "glibc perturbs blocks: the heap is left alone";
   if (!std::filesystem::exists("/sys/kernel/mm/transparent_hugepage/enabled"))
     GTEST_SKIP() << "this kernel has no transparent huge pages";
   cli::use_huge_page_heap();
@@ -104,6 +113,7 @@ std::optional<bool> present(std::uintptr_t address) {
 // grown again is another matter.
 TEST(HugePageHeap, TheHeapsFirstHugePageIsLeftUntouched) {
   if (sanitized()) GTEST_SKIP() << "ASan replaces malloc";
+  if (perturbed()) GTEST_SKIP() << "glibc perturbs blocks: the heap is left alone";
   if (!std::filesystem::exists("/sys/kernel/mm/transparent_hugepage/enabled"))
     GTEST_SKIP() << "this kernel has no transparent huge pages";
   if (!present(reinterpret_cast<std::uintptr_t>(&sanitized)))
