@@ -315,6 +315,29 @@ ChainsSweepResult first_emptied(const std::array<std::span<Interval>, kChains>& 
   return result;
 }
 
+// The joint loop over the three chains; if some chain emptied, the chains before it
+// go on alone (`alone(c, a, at)`: chain a from step `at`, the first empty step or
+// kNone). `last` is the index a full sweep updates last.
+template <class Steps, class Joint, class Alone>
+ChainsSweepResult sweep_together(const std::array<std::span<Interval>, kChains>& x, const std::array<Steps, kChains>& v,
+                                 Joint joint, Alone alone, std::size_t last) {
+  const std::size_t n = x[0].size();
+  const ChainArrays<typename Steps::element_type> c{{x[0].data(), x[1].data(), x[2].data()},
+                                                    {v[0].data(), v[1].data(), v[2].data()}};
+  double shrink[kChains];
+  unsigned emptied = 0;
+  std::size_t at;
+  {
+    UpwardRounding upward;
+    at = joint(c, n, shrink, emptied);
+  }
+  if (at != SweepResult::kNone) return first_emptied(x, v, at, emptied, [&](int a) { return alone(c, a, at); });
+  ChainsSweepResult result;
+  result.sweep.max_shrink = std::max({shrink[0], shrink[1], shrink[2]});
+  result.sweep.last = last;
+  return result;
+}
+
 }  // namespace
 
 ChainsSweepResult chains_forward(const std::array<std::span<Interval>, 3>& x,
@@ -323,48 +346,21 @@ ChainsSweepResult chains_forward(const std::array<std::span<Interval>, 3>& x,
   for (int a = 0; together && a < kChains; ++a) together = !x[a][0].is_empty();
   if (!together) return one_by_one(x, v, chain_forward);
   const std::size_t n = x[0].size();
-  const ChainArrays<const Interval> c{{x[0].data(), x[1].data(), x[2].data()}, {v[0].data(), v[1].data(), v[2].data()}};
-  double shrink[kChains];
-  unsigned emptied = 0;
-  std::size_t at;
-  {
-    UpwardRounding upward;
-    at = forward_loop3(c, n, shrink, emptied);
-  }
-  if (at != SweepResult::kNone) {
-    return first_emptied(x, v, at, emptied, [&](int a) {
-      double rest_shrink;
-      const std::size_t e = full_forward_loop(c.x[a] + at, c.v[a] + at, n - at, rest_shrink);
-      return e == SweepResult::kNone ? e : at + e;
-    });
-  }
-  ChainsSweepResult result;
-  result.sweep.max_shrink = std::max({shrink[0], shrink[1], shrink[2]});
-  result.sweep.last = n - 1;
-  return result;
+  const auto alone = [n](const ChainArrays<const Interval>& c, int a, std::size_t at) {
+    double rest_shrink;
+    const std::size_t e = full_forward_loop(c.x[a] + at, c.v[a] + at, n - at, rest_shrink);
+    return e == SweepResult::kNone ? e : at + e;
+  };
+  return sweep_together(x, v, forward_loop3, alone, n - 1);
 }
 
 ChainsSweepResult chains_backward(const std::array<std::span<Interval>, 3>& x, const std::array<std::span<Interval>, 3>& v) {
   if (!same_lengths(x, v)) return one_by_one(x, v, chain_backward);
-  const std::size_t n = x[0].size();
-  const ChainArrays<Interval> c{{x[0].data(), x[1].data(), x[2].data()}, {v[0].data(), v[1].data(), v[2].data()}};
-  double shrink[kChains];
-  unsigned emptied = 0;
-  std::size_t at;
-  {
-    UpwardRounding upward;
-    at = backward_loop3(c, n, shrink, emptied);
-  }
-  if (at != SweepResult::kNone) {
-    return first_emptied(x, v, at, emptied, [&](int a) {
-      double rest_shrink;
-      return full_backward_loop(c.x[a], c.v[a], at + 1, rest_shrink);
-    });
-  }
-  ChainsSweepResult result;
-  result.sweep.max_shrink = std::max({shrink[0], shrink[1], shrink[2]});
-  result.sweep.last = 0;
-  return result;
+  const auto alone = [](const ChainArrays<Interval>& c, int a, std::size_t at) {
+    double rest_shrink;
+    return full_backward_loop(c.x[a], c.v[a], at + 1, rest_shrink);
+  };
+  return sweep_together(x, v, backward_loop3, alone, 0);
 }
 
 }  // namespace gesmi
