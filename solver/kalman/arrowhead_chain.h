@@ -40,6 +40,15 @@ class ArrowheadChain {
   /// p_{k+1} - p_k = delta[k] again, with the information kept; the same system, bit for
   /// bit, as add_step(k, W_k, delta[k]) for every k.
   void add_steps_again(std::span<const Vec3> delta);
+  /// The same for unknowns taken as corrections from a reference point (p_k =
+  /// reference[k] + x_k): x_{k+1} - x_k = relative_step(delta[k], reference[k],
+  /// reference[k + 1]), bit for bit as add_step(k, W_k, that step) for every k.
+  void add_steps_again(std::span<const Vec3> delta, std::span<const Vec3> reference);
+  /// A step p_{k+1} - p_k = delta in terms of corrections from `from` (at p_k) and `to`
+  /// (at p_{k+1}). Small against the positions once the reference is close: solving for
+  /// corrections keeps the chain's rounding to the corrections' size (issue: whole-process
+  /// speed, docs/comparison.md "When the smoother stops").
+  static Vec3 relative_step(const Vec3& delta, const Vec3& from, const Vec3& to) { return delta - (to - from); }
   /// W_k of the step from p_k to p_{k+1}; meaningful until release_workspace().
   const Mat3& step_information(std::size_t k) const { return step_info_[k]; }
   /// Frees what only the solves need, once no further solve follows: the steps'
@@ -110,6 +119,7 @@ class ArrowheadChain {
   // add_step's terms of the system, for the information already in step_info_[k].
   void add_step_terms(std::size_t k, const Mat3& w, const Vec3& delta);
   void require_steps(const char* caller) const;
+  void require_steps_kept(std::size_t deltas);  // add_steps_again's checks; marks the steps added
   void clear_factors();     // every factor but the steps' information
   void release_segments();  // what the forward pass left for the backward passes
 

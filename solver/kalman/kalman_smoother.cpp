@@ -17,13 +17,16 @@ namespace {
 // A step at least this fraction of the previous one has stopped shrinking.
 constexpr double kStalledRatio = 0.9;
 
-// The weak horizontal prior on the first position (GPS may be absent) and the
-// biases' priors: the factors not from a measurement.
-void add_priors(ArrowheadChain& chain, const ChainFactors& factors, const BiasVec& prior_sigma) {
-  chain.add_position(0, Mat3d::Identity() * 1e-10, Vec3d::Zero());
+// The weak horizontal prior on the first position (GPS may be absent: p_0 near the
+// origin) and the biases' zero-mean priors: the factors not from a measurement, as
+// residuals at the linearisation point (chain_factors.h).
+void add_priors(ArrowheadChain& chain, const ChainFactors& factors, const BiasVec& prior_sigma,
+                const KalmanLinearisation& lin) {
+  chain.add_position(0, Mat3d::Identity() * 1e-10, -lin.position[0]);
   if (!factors.biases()) return;
   for (int b = 0; b < kBiasCount; ++b)
-    chain.add_static(factors.bias_offset() + static_cast<std::size_t>(b), 0.0, 1.0 / (prior_sigma[b] * prior_sigma[b]));
+    chain.add_static(factors.bias_offset() + static_cast<std::size_t>(b), -lin.bias[b],
+                     1.0 / (prior_sigma[b] * prior_sigma[b]));
 }
 
 // The steps whose measurements are tested: those of the fixes and associated marks.
@@ -33,12 +36,6 @@ std::vector<std::size_t> tested_steps(const Mission& m, std::span<const Position
   for (std::size_t j = 0; j < m.mark_count(); ++j)
     if (m.mark_mine[j] >= 0) steps.push_back(step_at(m, m.mark_time[j]));
   return steps;
-}
-
-// p_k = p'_k + G_k b (kalman_measurements.h): the position back from the chain's.
-Vec3d position(const ArrowheadChain& chain, const ChainFactors& factors, std::size_t k) {
-  if (!factors.biases()) return chain.mean(k);
-  return chain.mean(k) + factors.sensitivity(k) * chain.static_mean().tail<kBiasCount>();
 }
 
 // Its covariance: P' + G S G^T + X G^T + G X^T, with X = Cov(p'_k, b), S = Cov(b).
@@ -120,21 +117,22 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
   if (o.biases) chain.keep_cross_covariance_columns(3 * k_mines, kBiasCount);
   double previous_step = std::numeric_limits<double>::infinity();
   for (int it = 0; it < o.max_iterations; ++it) {
-    ChainBuilder builder(chain, k_mines, o.biases, lin.bias);
+    ChainBuilder builder(chain, k_mines, o.biases, lin);
     if (fixed_odometry) {
       chain.reset_keeping_steps();
-      add_priors(chain, builder, prior_sigma);
-      chain.add_steps_again(odometry_delta);
+      add_priors(chain, builder, prior_sigma, lin);
+      chain.add_steps_again(odometry_delta, lin.position);
     } else {
       chain.reset();
-      add_priors(chain, builder, prior_sigma);
+      add_priors(chain, builder, prior_sigma, lin);
     }
     linearise_measurements(m, model, fixes, measurements, lin, builder);
     chain.solve_means();  // the covariances only where they are read (below)
     ++result.iterations;
     // The step: how far the new estimate moved any coordinate from the linearisation
-    // point (for a mine first placed in this pass, from where it was placed), in metres
-    // and in units of that coordinate's smoothed standard deviation.
+    // point (for a mine first placed in this pass, from where it was placed): the
+    // chain's corrections, in metres and in units of that coordinate's smoothed
+    // standard deviation.
     const double infinity = std::numeric_limits<double>::infinity();
     // A NaN move or variance counts as infinitely large: it never converges nor stalls.
     const auto distance = [&](double moved) { return std::isnan(moved) ? infinity : std::fabs(moved); };
@@ -152,14 +150,14 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     };
     const auto each_move = [&](const auto& visit, bool with_variances) {
       for (std::size_t k = 0; k < n; ++k) {
-        const Vec3d moved = position(chain, builder, k) - lin.position[k];
+        const Vec3d moved = builder.position_correction(chain, k);
         if (with_variances) visit(moved, position_covariance(chain, builder, k).diagonal());
         else visit(moved, Vec3d::Zero());
       }
       for (std::size_t i = 0; i < k_mines; ++i) {
         if (!lin.mine_known[i]) continue;
         const auto b = static_cast<Eigen::Index>(3 * i);
-        visit(chain.static_mean().segment<3>(b) - lin.mine[i], chain.static_covariance().diagonal().segment<3>(b));
+        visit(chain.static_mean().segment<3>(b), chain.static_covariance().diagonal().segment<3>(b));
       }
     };
     each_move([&](const Vec3d& moved, const Vec3d&) { measure(moved); }, false);
@@ -179,12 +177,12 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     const bool last = result.converged || result.stalled || it + 1 == o.max_iterations;
     if (last) {
       // The checks on the factors just solved (before the linearisation point moves).
-      ResidualStatistics statistics(chain, k_mines, o.biases, lin.bias);
+      ResidualStatistics statistics(chain, k_mines, o.biases, lin);
       for (std::size_t k = 0; k < odometry_delta.size(); ++k)
         statistics.odometry(k, chain.step_information(k), odometry_delta[k], BiasJacobian::Zero());
       linearise_measurements(m, model, fixes, measurements, lin, statistics);
       for (int b = 0; b < kBiasCount && o.biases; ++b)
-        statistics.static_prior(builder.bias_offset() + static_cast<std::size_t>(b), 0.0,
+        statistics.static_prior(builder.bias_offset() + static_cast<std::size_t>(b), -lin.bias[b],
                                 1.0 / (prior_sigma[b] * prior_sigma[b]));
       // Without a fix the horizontal position is held by the weak prior alone: those two
       // unknowns are not determined by the data.
@@ -204,23 +202,25 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
       // Before the result's arrays, so that the peak stays that of a solve: what only the
       // solve and the linearisation needed.
       chain.release_workspace();
-      std::vector<Vec3d>().swap(lin.position);
       std::vector<Vec3d>().swap(odometry_delta);
       result.mean.resize(3 * n);
+      for (std::size_t k = 0; k < n; ++k) {
+        const Vec3d p = lin.position[k] + builder.position_correction(chain, k);
+        for (int r = 0; r < 3; ++r) result.mean[3 * k + static_cast<std::size_t>(r)] = p[r];
+      }
+      std::vector<Vec3d>().swap(lin.position);
       result.covariance.resize(9 * n);
       for (std::size_t k = 0; k < n; ++k) {
-        const Vec3d p = position(chain, builder, k);
         const Mat3d cov = position_covariance(chain, builder, k);
-        for (int r = 0; r < 3; ++r) {
-          result.mean[3 * k + static_cast<std::size_t>(r)] = p[r];
+        for (int r = 0; r < 3; ++r)
           for (int c = 0; c < 3; ++c) result.covariance[9 * k + static_cast<std::size_t>(3 * r + c)] = cov(r, c);
-        }
       }
     }
-    for (std::size_t k = 0; k < n && !last; ++k) lin.position[k] = position(chain, builder, k);
+    // The next linearisation point: this one corrected.
+    for (std::size_t k = 0; k < n && !last; ++k) lin.position[k] += builder.position_correction(chain, k);
     for (std::size_t i = 0; i < k_mines; ++i)
-      if (lin.mine_known[i]) lin.mine[i] = chain.static_mean().segment<3>(static_cast<Eigen::Index>(3 * i));
-    if (o.biases) lin.bias = chain.static_mean().tail<kBiasCount>();
+      if (lin.mine_known[i]) lin.mine[i] += chain.static_mean().segment<3>(static_cast<Eigen::Index>(3 * i));
+    if (o.biases) lin.bias += chain.static_mean().tail<kBiasCount>();
     if (last) break;
   }
   if (o.biases) {
@@ -232,7 +232,7 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     if (!lin.mine_known[i]) continue;
     const auto b = static_cast<Eigen::Index>(3 * i);
     for (int r = 0; r < 3; ++r) {
-      result.mine_mean[3 * i + static_cast<std::size_t>(r)] = chain.static_mean()[b + r];
+      result.mine_mean[3 * i + static_cast<std::size_t>(r)] = lin.mine[i][r];
       for (int c = 0; c < 3; ++c)
         result.mine_covariance[9 * i + static_cast<std::size_t>(3 * r + c)] = chain.static_covariance()(b + r, b + c);
     }

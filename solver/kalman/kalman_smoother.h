@@ -33,12 +33,12 @@ namespace gesmi {
 struct KalmanOptions {
   double noise_factor = 1.0;  // multiplies every variance
   int max_iterations = 20;    // cap on the linearisations of the range measurements
-  /// m: converged when the last linearisation moved no coordinate more. Not smaller by
-  /// default: solving the same system twice differs by up to 0.5 mm on a 6 km mission
-  /// with two fixes (the chain's rounding), so a step below 0.1 mm may never come.
+  /// m: converged when the last linearisation moved no coordinate more: a millimetre
+  /// against metres of uncertainty.
   double tolerance = 1e-3;
-  /// The rounding floor grows with the mission: about 0.5 mm at 6·10^4 steps, 0.4-1.7 mm
-  /// at 10^6, 2-12 mm at 10^7 (docs/comparison.md, "When the smoother stops"). So the
+  /// The chain solves for corrections (chain_factors.h), so its rounding floor is about
+  /// 10^-13 m from 6·10^4 to 10^6 steps (docs/comparison.md, "When the smoother stops");
+  /// a tolerance of 0, or a pathological mission, can still reach it. So the
   /// linearisations also stop ("stalled") when the step stops shrinking (at least 0.9 of
   /// the previous one; converging passes shrink it by a third or more) although no
   /// coordinate moved more than this fraction of its own smoothed standard deviation:

@@ -8,8 +8,8 @@
 namespace gesmi {
 
 ResidualStatistics::ResidualStatistics(const ArrowheadChain& solved, std::size_t mines, bool biases,
-                                       const BiasVec& bias_lin)
-    : ChainFactors(solved.size(), mines, biases, bias_lin), chain_(solved) {}
+                                       const KalmanLinearisation& point)
+    : ChainFactors(solved.size(), mines, biases, point), chain_(solved) {}
 
 void ResidualStatistics::chain_step(std::size_t k, const Mat3d& information, const Vec3d& delta) {
   const Vec3d e = chain_.mean(k + 1) - chain_.mean(k) - delta;

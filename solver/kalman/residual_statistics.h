@@ -14,8 +14,8 @@ namespace gesmi {
 class ResidualStatistics final : public ChainFactors {
  public:
   /// `solved` must keep the cross covariances at the steps of the tested inputs.
-  ResidualStatistics(const ArrowheadChain& solved, std::size_t mines, bool biases, const BiasVec& bias_lin);
-  /// A prior z = m_j with information w (the biases').
+  ResidualStatistics(const ArrowheadChain& solved, std::size_t mines, bool biases, const KalmanLinearisation& point);
+  /// A prior z = dm_j with information w (the biases', as a residual at the point).
   void static_prior(std::size_t j, double z, double w);
   /// The whole fit, given the number of unknowns it determines.
   KalmanConsistency consistency(std::size_t unknowns) const;

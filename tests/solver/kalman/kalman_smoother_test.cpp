@@ -73,16 +73,16 @@ TEST(KalmanSmoother, TheOdometryKeptIsTheOdometryLinearisedAgain) {
   for (int pass = 0; pass < 2; ++pass) {  // (the second pass at the first one's estimate)
     kept.reset_keeping_steps();
     prior(kept);
-    kept.add_steps_again(keep.delta);
-    ChainBuilder kept_builder(kept, mines, false, BiasVec::Zero());
+    kept.add_steps_again(keep.delta, lin_kept.position);
+    ChainBuilder kept_builder(kept, mines, false, lin_kept);
     linearise_measurements(m, m.model, t.fixes, {1.0, false, FactorSet::without_odometry}, lin_kept, kept_builder);
     kept.solve();
 
     ArrowheadChain again(n, 3 * mines);
     prior(again);
-    ChainBuilder builder(again, mines, false, BiasVec::Zero());
     KalmanLinearisation lin_again = lin_kept;
     if (pass == 0) lin_again = point;
+    ChainBuilder builder(again, mines, false, lin_again);
     linearise_measurements(m, m.model, t.fixes, {1.0, false, FactorSet::all}, lin_again, builder);
     again.solve();
     for (std::size_t k = 0; k < n; ++k) {
@@ -91,7 +91,7 @@ TEST(KalmanSmoother, TheOdometryKeptIsTheOdometryLinearisedAgain) {
     }
     EXPECT_EQ(kept.static_mean(), again.static_mean());
     EXPECT_EQ(kept.static_covariance(), again.static_covariance());
-    for (std::size_t k = 0; k < n; ++k) lin_kept.position[k] = kept.mean(k);
+    for (std::size_t k = 0; k < n; ++k) lin_kept.position[k] += kept.mean(k);  // (the means are corrections)
   }
 }
 
@@ -224,17 +224,24 @@ TEST(KalmanSmoother, ValidatesItsOptions) {
 // standard deviation, well before the cap; the estimate is then within a few times that
 // fraction of a standard deviation of where the cap's last linearisation leaves it. With
 // stall_fraction 0 they go on to the cap, not stalled.
+//
+// The floor is the rounding of the corrections the chain solves for (chain_factors.h),
+// not of the positions: on this mission, whose worst-case errors make the iteration
+// shrink its steps only about five-fold a pass, the steps go below a nanometre before
+// they stall. (Solved in positions, they stalled at 0.6 mm after 9 passes.)
 TEST(KalmanSmoother, StopsAtTheRoundingFloorWhenTheStepsStallWithinTheUncertainty) {
   const Mission m = simulated_2400s(SimulatedErrors::worst_case);
   const auto fixes = gps_fixes(m);
   KalmanOptions unreachable;
   unreachable.tolerance = 0.0;
+  unreachable.max_iterations = 60;
   const KalmanResult stalled = kalman_smooth(m, m.model, fixes, unreachable);
   EXPECT_TRUE(stalled.stalled);
   EXPECT_FALSE(stalled.converged);
   EXPECT_LT(stalled.iterations, unreachable.max_iterations);
   EXPECT_LE(stalled.last_step_sigmas, unreachable.stall_fraction);
   EXPECT_GT(stalled.last_step, 0.0);
+  EXPECT_LT(stalled.last_step, 1e-9);
 
   KalmanOptions to_the_cap = unreachable;
   to_the_cap.stall_fraction = 0.0;
