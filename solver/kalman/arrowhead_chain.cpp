@@ -9,7 +9,7 @@
 namespace gesmi {
 
 ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, double prior_info)
-    : n_(n), q_(q), prior_info_(prior_info), diag_(n, Mat3::Zero()), eta_(n, Vec3::Zero()),
+    : n_(n), q_(q), prior_info_(prior_info), diag_(9 * n, 0.0), eta_(n, Vec3::Zero()),
       step_info_(n > 0 ? n - 1 : 0, Mat3::Zero()),
       d_(MatX::Identity(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)) * prior_info),
       eta_m_(VecX::Zero(static_cast<Eigen::Index>(q))) {}
@@ -47,7 +47,7 @@ void ArrowheadChain::reset_keeping_steps() {
 }
 
 void ArrowheadChain::clear_factors() {
-  for (Mat3& x : diag_) x.setZero();
+  diag_.assign(9 * n_, 0.0);  // (also after take_covariances())
   for (Vec3& x : eta_) x.setZero();
   mixed_.clear();
   const auto q = static_cast<Eigen::Index>(q_);
@@ -57,7 +57,7 @@ void ArrowheadChain::clear_factors() {
 }
 
 void ArrowheadChain::add_position(std::size_t k, const Mat3& information, const Vec3& mean) {
-  diag_[k] += information;
+  diag(k) += information;
   eta_[k] += information * mean;
 }
 
@@ -70,8 +70,8 @@ void ArrowheadChain::add_step(std::size_t k, const Mat3& w, const Vec3& delta) {
 
 void ArrowheadChain::add_step_terms(std::size_t k, const Mat3& w, const Vec3& delta) {
   // Residual p_{k+1} - p_k - delta: blocks (k,k) and (k+1,k+1) get W, (k,k+1) gets -W.
-  diag_[k] += w;
-  diag_[k + 1] += w;
+  diag(k) += w;
+  diag(k + 1) += w;
   eta_[k] -= w * delta;
   eta_[k + 1] += w * delta;
 }
@@ -96,7 +96,7 @@ void ArrowheadChain::require_steps_kept(std::size_t deltas) {
 }
 
 void ArrowheadChain::add_position_row(std::size_t k, const Row3& hp, double z, double w) {
-  diag_[k] += w * hp.transpose() * hp;
+  diag(k) += w * hp.transpose() * hp;
   eta_[k] += w * z * hp.transpose();
 }
 
@@ -119,7 +119,7 @@ void ArrowheadChain::keep_cross_covariance_columns(std::size_t first, std::size_
 }
 
 void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVectorXd& hm, double z, double w) {
-  diag_[k] += w * hp.transpose() * hp;
+  diag(k) += w * hp.transpose() * hp;
   eta_[k] += w * z * hp.transpose();
   MatX& b = mixed_[k];  // created empty at the first mixed factor of step k
   if (b.size() == 0) b = MatX::Zero(3, static_cast<Eigen::Index>(q_));
@@ -154,7 +154,7 @@ void ArrowheadChain::solve() {
   segment_b_.clear();  // B_e of each segment (3 x q)
   MatX d = d_;
   VecX eta_m = eta_m_;
-  Mat3 a = diag_.empty() ? Mat3::Zero() : diag_[0];
+  Mat3 a = n_ == 0 ? Mat3::Zero() : Mat3(diag(0));
   Vec3 eta = eta_.empty() ? Vec3::Zero() : eta_[0];
   Mat3 t = Mat3::Identity();
   Mat3 acc = Mat3::Zero();
@@ -185,7 +185,7 @@ void ArrowheadChain::solve() {
     if (k % kCouplingBlock == 0) coupling_start_[k / kCouplingBlock] = t;
     const Mat3 s_k = a.inverse();
     const Vec3 c_k = s_k * eta;
-    diag_[k] = s_k;  // the information block of p_k was read at step k - 1
+    diag(k) = s_k;  // the information block of p_k was read at step k - 1
     eta_[k] = c_k;
     if (!segment_b_.empty()) {
       const Mat3 p_k = s_k * t;  // P_k
@@ -195,7 +195,7 @@ void ArrowheadChain::solve() {
     }
     if (k + 1 == n_) break;
     const Mat3& w = step_info_[k];  // the (k, k+1) block is -W
-    a = diag_[k + 1] - w * s_k * w;
+    a = diag(k + 1) - w * s_k * w;
     eta = eta_[k + 1] + w * c_k;
     if (const MatX* b = mixed_at(k + 1)) {
       if (segment_b_.empty()) {
@@ -221,6 +221,13 @@ void ArrowheadChain::solve() {
     b_sigma_b_.push_back(b_sigma_.back() * b.transpose());
   }
   backward_pass(Stage::means);
+}
+
+std::vector<double> ArrowheadChain::take_covariances() {
+  if (stage_ != Stage::covariances)
+    throw std::logic_error("ArrowheadChain::take_covariances: solve_covariances() first, once per set of factors");
+  stage_ = Stage::taken;
+  return std::move(diag_);
 }
 
 void ArrowheadChain::solve_covariances() {
@@ -257,7 +264,7 @@ void ArrowheadChain::solve_covariances() {
       }
       if (segment < 0) continue;  // before the first event: no coupling
       if (k > first) t_k = event ? Mat3::Identity().eval() : (step_info_[k - 1] * coupling[k - 1 - first]).eval();
-      coupling[k - first] = diag_[k] * t_k;
+      coupling[k - first] = diag(k) * t_k;
     }
   };
   MatX z = MatX::Zero(3, q);  // X_{k+1} in full, valid at segment boundaries
@@ -268,7 +275,7 @@ void ArrowheadChain::solve_covariances() {
   for (std::size_t k = n_; k-- > 0;) {
     if (k + 1 == n_ || (k + 1) % kCouplingBlock == 0) recompute_coupling(k - k % kCouplingBlock, k + 1);
     while (segment >= 0 && events_[static_cast<std::size_t>(segment)] > k) --segment;
-    const Mat3 l = k + 1 < n_ ? (-diag_[k] * step_info_[k]).eval() : Mat3::Zero();
+    const Mat3 l = k + 1 < n_ ? (-diag(k) * step_info_[k]).eval() : Mat3::Zero();
     if (pass == Stage::means) {
       // eta_[k + 1] holds the mean of p_{k+1} by now, eta_[k] still c_k.
       Vec3 p = eta_[k];
@@ -286,8 +293,8 @@ void ArrowheadChain::solve_covariances() {
       if (current >= 0) y_end = z * segment_b_[static_cast<std::size_t>(current)].transpose();
     }
     // diag_[k + 1] holds the covariance of p_{k+1} by now; diag_[k] still holds S_k.
-    Mat3 cov = diag_[k];
-    if (k + 1 < n_) cov += l * diag_[k + 1] * l.transpose();
+    Mat3 cov = diag(k);
+    if (k + 1 < n_) cov += l * diag(k + 1) * l.transpose();
     if (current >= 0) {
       const auto e = static_cast<std::size_t>(current);
       const Mat3& p_k = coupling[k % kCouplingBlock];
@@ -304,7 +311,7 @@ void ArrowheadChain::solve_covariances() {
       alpha = (-l * alpha).eval();  // before the first event: X_k = -L_k X_{k+1}
       beta = (-l * beta).eval();
     }
-    diag_[k] = 0.5 * (cov + cov.transpose());
+    diag(k) = 0.5 * (cov + cov.transpose());
     // X_k = alpha Z + beta B_e Sigma_mm (beta is zero before the first event).
     if (column_count_ > 0) {
       const auto first = static_cast<Eigen::Index>(column_first_), count = static_cast<Eigen::Index>(column_count_);

@@ -89,7 +89,13 @@ class ArrowheadChain {
   /// The smoothed mean of p_k, meaningful after solve_means() (or solve()), and its
   /// covariance, meaningful after solve_covariances() (or solve()).
   const Vec3& mean(std::size_t k) const { return eta_[k]; }
-  const Mat3& covariance(std::size_t k) const { return diag_[k]; }
+  Eigen::Map<const Mat3> covariance(std::size_t k) const { return Eigen::Map<const Mat3>(diag_.data() + 9 * k); }
+  /// After solve_covariances() (std::logic_error otherwise): every covariance, 9 numbers
+  /// per step, moved out of the chain (no copy, no fresh memory: at 10^7 steps a new
+  /// 720 MB array cost the kernel's zeroing). Each block is symmetric bit for bit, so its
+  /// column-major order is also its row-major one. covariance(k) is meaningless afterwards,
+  /// until the next solve after reset().
+  std::vector<double> take_covariances();
   const VecX& static_mean() const { return m_mean_; }
   const MatX& static_covariance() const { return m_cov_; }
   /// Cov(p_k, m) at a step given to keep_cross_covariance_at (std::out_of_range otherwise).
@@ -111,7 +117,7 @@ class ArrowheadChain {
   // block from a T_k kept every kCouplingBlock steps, with the same operations in the
   // same order as the forward pass, so that the results are bitwise the same.
   static constexpr std::size_t kCouplingBlock = 256;
-  enum class Stage { factors, means, covariances };  // what the buffers hold
+  enum class Stage { factors, means, covariances, taken };  // what the buffers hold
   // The steps' information: accumulating (add_step), kept for add_steps_again(), added
   // again, or released.
   enum class Steps { building, kept, added_again, released };
@@ -125,7 +131,10 @@ class ArrowheadChain {
 
   std::size_t n_, q_;
   double prior_info_;
-  std::vector<Mat3> diag_;        // information block of p_k; then S_k; then the covariance
+  // The 3x3 block of p_k, column-major, 9 numbers a step (a plain array, so that
+  // take_covariances() can hand it over): its information; then S_k; then the covariance.
+  std::vector<double> diag_;
+  Eigen::Map<Mat3> diag(std::size_t k) { return Eigen::Map<Mat3>(diag_.data() + 9 * k); }
   std::vector<Vec3> eta_;         // information vector of p_k; then c_k; then the mean
   std::vector<Mat3> step_info_;   // W_k between p_k and p_k+1
   std::map<std::size_t, MatX> mixed_;  // B_k (3 x q) at the few steps with a mixed factor

@@ -38,14 +38,16 @@ std::vector<std::size_t> tested_steps(const Mission& m, std::span<const Position
   return steps;
 }
 
-// Its covariance: P' + G S G^T + X G^T + G X^T, with X = Cov(p'_k, b), S = Cov(b).
-Mat3d position_covariance(const ArrowheadChain& chain, const ChainFactors& factors, std::size_t k) {
-  if (!factors.biases()) return chain.covariance(k);
+// The covariance of p_k from P' = Cov(p'_k), the chain's: P' + G S G^T + X G^T + G X^T,
+// with X = Cov(p'_k, b), S = Cov(b); symmetric bit for bit.
+Mat3d position_covariance(const Mat3d& chain_covariance, const ArrowheadChain& chain, const ChainFactors& factors,
+                          std::size_t k) {
+  if (!factors.biases()) return chain_covariance;
   const BiasJacobian& g = factors.sensitivity(k);
   const Eigen::Matrix<double, kBiasCount, kBiasCount> s =
       chain.static_covariance().bottomRightCorner<kBiasCount, kBiasCount>();
   const Mat3d x_g = chain.cross_covariance_columns(k) * g.transpose();
-  const Mat3d cov = chain.covariance(k) + g * s * g.transpose() + x_g + x_g.transpose();
+  const Mat3d cov = chain_covariance + g * s * g.transpose() + x_g + x_g.transpose();
   return 0.5 * (cov + cov.transpose());
 }
 
@@ -151,7 +153,7 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     const auto each_move = [&](const auto& visit, bool with_variances) {
       for (std::size_t k = 0; k < n; ++k) {
         const Vec3d moved = builder.position_correction(chain, k);
-        if (with_variances) visit(moved, position_covariance(chain, builder, k).diagonal());
+        if (with_variances) visit(moved, position_covariance(chain.covariance(k), chain, builder, k).diagonal());
         else visit(moved, Vec3d::Zero());
       }
       for (std::size_t i = 0; i < k_mines; ++i) {
@@ -209,11 +211,12 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
         for (int r = 0; r < 3; ++r) result.mean[3 * k + static_cast<std::size_t>(r)] = p[r];
       }
       std::vector<Vec3d>().swap(lin.position);
-      result.covariance.resize(9 * n);
-      for (std::size_t k = 0; k < n; ++k) {
-        const Mat3d cov = position_covariance(chain, builder, k);
-        for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c) result.covariance[9 * k + static_cast<std::size_t>(3 * r + c)] = cov(r, c);
+      // The chain's own covariance blocks become the result's (symmetric: column-major is
+      // row-major), converted in place with biases.
+      result.covariance = chain.take_covariances();
+      for (std::size_t k = 0; k < n && o.biases; ++k) {
+        Eigen::Map<Mat3d> cov(result.covariance.data() + 9 * k);
+        cov = position_covariance(cov, chain, builder, k);
       }
     }
     // The next linearisation point: this one corrected.

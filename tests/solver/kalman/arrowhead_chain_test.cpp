@@ -96,6 +96,38 @@ TEST(ArrowheadChain, MatchesADenseLeastSquaresSolve) {
   EXPECT_THROW(b.chain.solve(), std::logic_error);
 }
 
+// take_covariances() hands over the blocks covariance(k) showed, symmetric bit for bit (so
+// that the smoother's result reads them row-major), against the dense inverse; only after
+// the covariance pass, and once per solve.
+TEST(ArrowheadChain, HandsOverItsCovariancesSymmetricAndOnce) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const std::size_t n = 40, q = 3;
+  Both b(n, q);
+  for (std::size_t k = 0; k + 1 < n; ++k) b.step(k, random_spd(rng, 20.0), Vec3(u(rng), u(rng), u(rng)));
+  for (std::size_t k = 0; k < n; k += 9) b.position(k, random_spd(rng, 0.5), Vec3(u(rng), u(rng), u(rng)));
+  for (const std::size_t k : {std::size_t{5}, std::size_t{21}, std::size_t{39}})
+    for (int r = 0; r < 3; ++r) {
+      Eigen::RowVectorXd hm(q);
+      for (std::size_t i = 0; i < q; ++i) hm(static_cast<Eigen::Index>(i)) = u(rng);
+      b.mixed(k, Eigen::RowVector3d(u(rng), u(rng), u(rng)), hm, u(rng), 3.0 + u(rng));
+    }
+  b.chain.solve_means();
+  EXPECT_THROW(b.chain.take_covariances(), std::logic_error);  // no covariance pass yet
+  b.chain.solve_covariances();
+  std::vector<Mat3> shown;
+  for (std::size_t k = 0; k < n; ++k) shown.push_back(b.chain.covariance(k));
+  const std::vector<double> taken = b.chain.take_covariances();
+  ASSERT_EQ(taken.size(), 9 * n);
+  const MatX cov = Eigen::LDLT<MatX>(b.lambda).solve(MatX::Identity(b.lambda.rows(), b.lambda.cols()));
+  for (std::size_t k = 0; k < n; ++k) {
+    const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> row_major(taken.data() + 9 * k);
+    ASSERT_EQ(Mat3(row_major), shown[k]) << k;  // also column-major: symmetric bit for bit
+    EXPECT_LT((Mat3(row_major) - cov.block<3, 3>(b.p(k), b.p(k))).norm(), 1e-8) << k;
+  }
+  EXPECT_THROW(b.chain.take_covariances(), std::logic_error);  // handed over already
+}
+
 // The smoother without biases keeps the odometry's information between passes and adds
 // its steps again (reset_keeping_steps, add_steps_again): the system solved must be the
 // one a chain given every factor afresh solves, bit for bit, whatever the other factors;
@@ -161,8 +193,11 @@ TEST(ArrowheadChain, RefusesCallsThatWouldSolveAnotherSystem) {
   for (std::size_t k = 0; k < 3; ++k) chain.add_step(k, w, delta[k]);
   chain.reset_keeping_steps();
   EXPECT_THROW(chain.add_step(0, w, delta[0]), std::logic_error);  // would make it 2W
+  const std::vector<Vec3> reference(4, Vec3::Zero());
+  EXPECT_THROW(chain.add_steps_again(delta, std::span<const Vec3>(reference).first(3)), std::invalid_argument);
   chain.add_steps_again(delta);
   EXPECT_THROW(chain.add_steps_again(delta), std::logic_error);  // twice
+  EXPECT_THROW(chain.add_steps_again(delta, reference), std::logic_error);
   chain.add_position(0, Mat3::Identity(), Vec3::Zero());
   chain.solve_means();
   EXPECT_LT((chain.mean(3) - Vec3(3.0, 0.0, 0.0)).norm(), 1e-12);  // the three steps from p_0 = 0
