@@ -138,7 +138,7 @@ void ArrowheadChain::solve() {
   solve_covariances();
 }
 
-// flatten (here, for the forward pass, and on backward_pass): GCC left Eigen's 3x3
+// flatten (here, for the forward pass, and on the backward passes): GCC left Eigen's 3x3
 // products and copies as calls (a third of the smoother's time in perf); inlined, the
 // same operations in the same order (bitwise the same results) take 30 % less.
 [[gnu::flatten]] void ArrowheadChain::solve_means() {
@@ -220,7 +220,7 @@ void ArrowheadChain::solve() {
     b_sigma_.push_back(b * m_cov_);
     b_sigma_b_.push_back(b_sigma_.back() * b.transpose());
   }
-  backward_pass(Stage::means);
+  backward_means();
 }
 
 std::vector<double> ArrowheadChain::take_covariances() {
@@ -235,20 +235,50 @@ void ArrowheadChain::solve_covariances() {
   if (stage_ != Stage::means)
     throw std::logic_error("ArrowheadChain::solve_covariances: solve_means() first, once per set of factors");
   stage_ = Stage::covariances;
-  backward_pass(Stage::covariances);
+  backward_covariances();
   release_segments();  // (with biases every step is a segment: not kept to the peak)
 }
 
-// Backward: p_k = c_k - L_k p_{k+1} - P_k B_e m, with L_k = -S_k W_k (the means pass). Within
-// a segment the cross covariance X_{k} = Cov(p_k, m) is alpha_k Z + beta_k B_e Sigma_mm,
-// with Z = X at the step after the segment; only Y_k = X_{k+1} B_e^T (3x3) is needed per
-// step (the covariance pass). The means pass leaves diag_ = S_k for the covariance pass.
-[[gnu::flatten]] void ArrowheadChain::backward_pass(Stage pass) {
-  const auto q = static_cast<Eigen::Index>(q_);
-  // The segment of step k: the index of the last event at or before it (-1: none).
-  const auto segment_of = [&](std::size_t k) {
-    return static_cast<int>(std::upper_bound(events_.begin(), events_.end(), k) - events_.begin()) - 1;
+int ArrowheadChain::segment_of(std::size_t k) const {
+  return static_cast<int>(std::upper_bound(events_.begin(), events_.end(), k) - events_.begin()) - 1;
+}
+
+// Backward, the means: p_k = c_k - L_k p_{k+1} - P_k B_e m with L_k = -S_k W_k and P_k =
+// S_k T_k, that is p_k = c_k + S_k (W_k p_{k+1} - v_k) with v_k = T_k B_e m. The v_k follow
+// T_k's recursion (B_e m at an event, W_{k-1} S_{k-1} v_{k-1} after), recomputed block by
+// block from the T_k kept at each block's start: 3-vectors where the covariance pass needs
+// the 3x3 P_k (a third of the arithmetic). diag_ holds S_k, and keeps it for the
+// covariance pass.
+[[gnu::flatten]] void ArrowheadChain::backward_means() {
+  std::vector<Vec3> coupled(std::min(n_, kCouplingBlock));  // v_k of a block's steps
+  const auto recompute_coupled = [&](std::size_t first, std::size_t end) {
+    int segment = segment_of(first);
+    auto next_event = static_cast<std::size_t>(segment + 1);  // the first event after `first`
+    Vec3 v = segment < 0 ? Vec3::Zero() : (coupling_start_[first / kCouplingBlock] * bm_[static_cast<std::size_t>(segment)]).eval();
+    for (std::size_t k = first; k < end; ++k) {
+      if (next_event < events_.size() && events_[next_event] == k) {
+        v = bm_[static_cast<std::size_t>(++segment)];  // T_k = I
+        ++next_event;
+      } else if (k > first) {
+        v = step_info_[k - 1] * (diag(k - 1) * v).eval();  // (zero before the first event)
+      }
+      coupled[k - first] = v;
+    }
   };
+  for (std::size_t k = n_; k-- > 0;) {
+    if (k + 1 == n_ || (k + 1) % kCouplingBlock == 0) recompute_coupled(k - k % kCouplingBlock, k + 1);
+    // eta_[k + 1] holds the mean of p_{k+1} by now, eta_[k] still c_k.
+    Vec3 r = -coupled[k % kCouplingBlock];
+    if (k + 1 < n_) r += step_info_[k] * eta_[k + 1];
+    eta_[k] += diag(k) * r;
+  }
+}
+
+// Backward, the covariances. Within a segment the cross covariance X_{k} = Cov(p_k, m) is
+// alpha_k Z + beta_k B_e Sigma_mm, with Z = X at the step after the segment; only Y_k =
+// X_{k+1} B_e^T (3x3) is needed per step.
+[[gnu::flatten]] void ArrowheadChain::backward_covariances() {
+  const auto q = static_cast<Eigen::Index>(q_);
   // P_k of the steps of a block, recomputed as the forward pass computed them. Their
   // S_k are still in diag_: the backward pass has not reached the block yet.
   std::vector<Mat3> coupling(std::min(n_, kCouplingBlock));
@@ -276,14 +306,6 @@ void ArrowheadChain::solve_covariances() {
     if (k + 1 == n_ || (k + 1) % kCouplingBlock == 0) recompute_coupling(k - k % kCouplingBlock, k + 1);
     while (segment >= 0 && events_[static_cast<std::size_t>(segment)] > k) --segment;
     const Mat3 l = k + 1 < n_ ? (-diag(k) * step_info_[k]).eval() : Mat3::Zero();
-    if (pass == Stage::means) {
-      // eta_[k + 1] holds the mean of p_{k+1} by now, eta_[k] still c_k.
-      Vec3 p = eta_[k];
-      if (k + 1 < n_) p -= l * eta_[k + 1];
-      if (segment >= 0) p -= coupling[k % kCouplingBlock] * bm_[static_cast<std::size_t>(segment)];
-      eta_[k] = p;
-      continue;
-    }
     if (segment != current) {
       // Entering a new segment (going backward): X_{k+1} in full from the previous one.
       if (current >= 0 && k + 1 < n_) z = alpha * z + beta * b_sigma_[static_cast<std::size_t>(current)];

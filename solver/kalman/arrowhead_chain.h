@@ -121,7 +121,9 @@ class ArrowheadChain {
   // The steps' information: accumulating (add_step), kept for add_steps_again(), added
   // again, or released.
   enum class Steps { building, kept, added_again, released };
-  void backward_pass(Stage pass);
+  void backward_means();
+  void backward_covariances();
+  int segment_of(std::size_t k) const;  // the last event at or before step k (-1: none)
   // add_step's terms of the system, for the information already in step_info_[k].
   void add_step_terms(std::size_t k, const Mat3& w, const Vec3& delta);
   void require_steps(const char* caller) const;
