@@ -113,9 +113,10 @@ class ArrowheadChain {
   // conditional mean c_k, each once it has been read for the last time; the means' backward
   // pass overwrites eta_[k] with the mean, the covariances' diag_[k] with the covariance. The
   // coupling P_k = S_k T_k of a step to its segment's unknowns and the gain L_k = -S_k W_k
-  // are not stored (P_k took 80 B/step): the backward pass recomputes them, P_k block by
-  // block from a T_k kept every kCouplingBlock steps, with the same operations in the
-  // same order as the forward pass, so that the results are bitwise the same.
+  // are not stored (P_k took 80 B/step): the backward passes recompute them block by block
+  // from a T_k kept every kCouplingBlock steps (the covariances' P_k with the same
+  // operations in the same order as the forward pass; the means' only its action on the
+  // segment's B_e m, a 3-vector).
   static constexpr std::size_t kCouplingBlock = 256;
   enum class Stage { factors, means, covariances, taken };  // what the buffers hold
   // The steps' information: accumulating (add_step), kept for add_steps_again(), added
