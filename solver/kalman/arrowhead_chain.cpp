@@ -7,6 +7,38 @@
 #include <string>
 
 namespace gesmi {
+namespace {
+
+using Mat3 = ArrowheadChain::Mat3;
+
+// The forward pass's blocks are symmetric (information, its inverse, W S W, T^T S T): each
+// is computed from, or as, its upper triangle and mirrored, a third less arithmetic in the
+// pass that dominates the smoother, and symmetric bit for bit.
+
+// The inverse of a symmetric block, read from its upper triangle: six cofactors where a
+// general inverse takes nine.
+Mat3 symmetric_inverse(const Mat3& a) {
+  const double c00 = a(1, 1) * a(2, 2) - a(1, 2) * a(1, 2);
+  const double c01 = a(0, 2) * a(1, 2) - a(0, 1) * a(2, 2);
+  const double c02 = a(0, 1) * a(1, 2) - a(0, 2) * a(1, 1);
+  const double c11 = a(0, 0) * a(2, 2) - a(0, 2) * a(0, 2);
+  const double c12 = a(0, 1) * a(0, 2) - a(0, 0) * a(1, 2);
+  const double c22 = a(0, 0) * a(1, 1) - a(0, 1) * a(0, 1);
+  const double inverse_determinant = 1.0 / (a(0, 0) * c00 + a(0, 1) * c01 + a(0, 2) * c02);
+  Mat3 s;
+  s << c00, c01, c02, c01, c11, c12, c02, c12, c22;
+  return s * inverse_determinant;
+}
+
+// x y where the product is known to be symmetric: its upper triangle, mirrored.
+Mat3 symmetric_product(const Mat3& x, const Mat3& y) {
+  Mat3 r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) r(j, i) = r(i, j) = x.row(i).dot(y.col(j));
+  return r;
+}
+
+}  // namespace
 
 ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, double prior_info)
     : n_(n), q_(q), prior_info_(prior_info), diag_(9 * n, 0.0), eta_(n, Vec3::Zero()),
@@ -183,19 +215,19 @@ void ArrowheadChain::solve() {
     if (const MatX* b0 = mixed_at(0)) open_segment(*b0, nullptr);
   for (std::size_t k = 0; k < n_; ++k) {
     if (k % kCouplingBlock == 0) coupling_start_[k / kCouplingBlock] = t;
-    const Mat3 s_k = a.inverse();
+    const Mat3 s_k = symmetric_inverse(a);
     const Vec3 c_k = s_k * eta;
     diag(k) = s_k;  // the information block of p_k was read at step k - 1
     eta_[k] = c_k;
     if (!segment_b_.empty()) {
       const Mat3 p_k = s_k * t;  // P_k
-      acc.noalias() += t.transpose() * p_k;
+      acc += symmetric_product(t.transpose(), p_k);  // T^T S T
       acc_eta.noalias() += t.transpose() * c_k;
       if (k + 1 < n_) t = step_info_[k] * p_k;  // T_{k+1} (an event at k + 1 resets it below)
     }
     if (k + 1 == n_) break;
     const Mat3& w = step_info_[k];  // the (k, k+1) block is -W
-    a = diag(k + 1) - w * s_k * w;
+    a = diag(k + 1) - symmetric_product(w * s_k, w);
     eta = eta_[k + 1] + w * c_k;
     if (const MatX* b = mixed_at(k + 1)) {
       if (segment_b_.empty()) {
