@@ -57,6 +57,11 @@ void ArrowheadChain::require_steps(const char* caller) const {
     throw std::logic_error(std::string("ArrowheadChain::") + caller + ": the workspace was released; reset() first");
 }
 
+void ArrowheadChain::require_factors(const char* caller) const {
+  if (stage_ != Stage::factors)
+    throw std::logic_error(std::string("ArrowheadChain::") + caller + ": the factors were solved already; reset() first");
+}
+
 void ArrowheadChain::release_workspace() {
   std::vector<Mat3>().swap(step_info_);
   steps_ = Steps::released;
@@ -89,6 +94,7 @@ void ArrowheadChain::clear_factors() {
 }
 
 void ArrowheadChain::add_position(std::size_t k, const Mat3& information, const Vec3& mean) {
+  require_factors("add_position");
   diag(k) += information;
   eta_[k] += information * mean;
 }
@@ -96,6 +102,7 @@ void ArrowheadChain::add_position(std::size_t k, const Mat3& information, const 
 void ArrowheadChain::add_step(std::size_t k, const Mat3& w, const Vec3& delta) {
   if (steps_ != Steps::building)
     throw std::logic_error("ArrowheadChain::add_step: the steps are kept or released; reset() first");
+  require_factors("add_step");
   step_info_[k] += w;
   add_step_terms(k, w, delta);
 }
@@ -128,11 +135,13 @@ void ArrowheadChain::require_steps_kept(std::size_t deltas) {
 }
 
 void ArrowheadChain::add_position_row(std::size_t k, const Row3& hp, double z, double w) {
+  require_factors("add_position_row");
   diag(k) += w * hp.transpose() * hp;
   eta_[k] += w * z * hp.transpose();
 }
 
 void ArrowheadChain::add_static(std::size_t j, double z, double w) {
+  require_factors("add_static");
   const auto i = static_cast<Eigen::Index>(j);
   d_(i, i) += w;
   eta_m_[i] += w * z;
@@ -151,6 +160,7 @@ void ArrowheadChain::keep_cross_covariance_columns(std::size_t first, std::size_
 }
 
 void ArrowheadChain::add_mixed(std::size_t k, const Row3& hp, const Eigen::RowVectorXd& hm, double z, double w) {
+  require_factors("add_mixed");
   diag(k) += w * hp.transpose() * hp;
   eta_[k] += w * z * hp.transpose();
   MatX& b = mixed_[k];  // created empty at the first mixed factor of step k

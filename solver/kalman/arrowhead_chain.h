@@ -89,12 +89,15 @@ class ArrowheadChain {
   /// The smoothed mean of p_k, meaningful after solve_means() (or solve()), and its
   /// covariance, meaningful after solve_covariances() (or solve()).
   const Vec3& mean(std::size_t k) const { return eta_[k]; }
-  Eigen::Map<const Mat3> covariance(std::size_t k) const { return Eigen::Map<const Mat3>(diag_.data() + 9 * k); }
+  Eigen::Map<const Mat3> covariance(std::size_t k) const {
+    if (stage_ == Stage::taken) throw std::logic_error("ArrowheadChain::covariance: handed over by take_covariances()");
+    return Eigen::Map<const Mat3>(diag_.data() + 9 * k);
+  }
   /// After solve_covariances() (std::logic_error otherwise): every covariance, 9 numbers
   /// per step, moved out of the chain (no copy, no fresh memory: at 10^7 steps a new
   /// 720 MB array cost the kernel's zeroing). Each block is symmetric bit for bit, so its
-  /// column-major order is also its row-major one. covariance(k) is meaningless afterwards,
-  /// until the next solve after reset().
+  /// column-major order is also its row-major one. covariance(k) and adding factors are
+  /// refused afterwards (std::logic_error), until reset().
   std::vector<double> take_covariances();
   const VecX& static_mean() const { return m_mean_; }
   const MatX& static_covariance() const { return m_cov_; }
@@ -128,6 +131,9 @@ class ArrowheadChain {
   // add_step's terms of the system, for the information already in step_info_[k].
   void add_step_terms(std::size_t k, const Mat3& w, const Vec3& delta);
   void require_steps(const char* caller) const;
+  // Factors are added before a solve only: it works in place, and take_covariances() empties
+  // the blocks (std::logic_error otherwise, until reset()).
+  void require_factors(const char* caller) const;
   void require_steps_kept(std::size_t deltas);  // add_steps_again's checks; marks the steps added
   void clear_factors();     // every factor but the steps' information
   void release_segments();  // what the forward pass left for the backward passes

@@ -39,7 +39,7 @@ int run_kalman(std::span<const std::string> args) {
        "converged when a linearisation moves no position or mine coordinate more (m)")
       ("stall-fraction", po::value<std::string>()->default_value("0.01"),
        "also stop when the steps stop shrinking though none exceeds this fraction of its coordinate's standard "
-       "deviation: the rounding floor of long missions (0: never)")
+       "deviation: the smoother's rounding floor, about 1e-13 m (0: never)")
       ("biases", po::bool_switch(), "also estimate constant sensor biases (heading; DVL scale and offset per axis; depth scale and offset)");
   add_json_option(options, true);
   add_skip_existing(options);
@@ -107,8 +107,8 @@ int run_kalman(std::span<const std::string> args) {
   else if (!k.converged)
     std::fprintf(stderr,
                  "gesmi kalman: warning: not converged after %d linearisations (the last moved a coordinate by %s m, more "
-                 "than the tolerance %s m): raise --max-iterations, or --tolerance if the steps stall near 0.5 mm (the "
-                 "smoother's rounding floor)\n",
+                 "than the tolerance %s m): raise --max-iterations (up to 100), or "
+                 "--tolerance if a coarser estimate will do\n",
                  k.iterations, io::format_number(k.last_step).c_str(), io::format_number(o.tolerance).c_str());
   CommandReport report("kalman", v);
   if (report.enabled()) {

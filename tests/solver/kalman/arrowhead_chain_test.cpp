@@ -126,6 +126,11 @@ TEST(ArrowheadChain, HandsOverItsCovariancesSymmetricAndOnce) {
     EXPECT_LT((Mat3(row_major) - cov.block<3, 3>(b.p(k), b.p(k))).norm(), 1e-8) << k;
   }
   EXPECT_THROW(b.chain.take_covariances(), std::logic_error);  // handed over already
+  EXPECT_THROW(b.chain.covariance(0), std::logic_error);       // (the blocks are gone)
+  EXPECT_THROW(b.chain.add_position(0, Mat3::Identity(), Vec3::Zero()), std::logic_error);
+  EXPECT_THROW(b.chain.add_position_row(0, Eigen::RowVector3d(0, 0, 1), 1.0, 1.0), std::logic_error);
+  b.chain.reset();  // the blocks again, zero
+  b.chain.add_position(0, Mat3::Identity(), Vec3::Zero());
 }
 
 // The smoother without biases keeps the odometry's information between passes and adds

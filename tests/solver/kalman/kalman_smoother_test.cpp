@@ -54,7 +54,10 @@ TEST(KalmanSmoother, TheOdometryKeptIsTheOdometryLinearisedAgain) {
   for (std::size_t k = 0; k < n; ++k) point.position.push_back(Vec3d(m.truth_x[k] + 3.0, m.truth_y[k] - 2.0, m.truth_z[k]));
   point.mine.assign(mines, Vec3d::Zero());
   point.mine_known.assign(mines, 0);
-  const auto prior = [](ArrowheadChain& chain) { chain.add_position(0, Mat3d::Identity() * 1e-10, Vec3d::Zero()); };
+  // (the smoother's prior, p_0 near the origin, as a residual at the point)
+  const auto prior = [](ArrowheadChain& chain, const KalmanLinearisation& lin) {
+    chain.add_position(0, Mat3d::Identity() * 1e-10, -lin.position[0]);
+  };
 
   ArrowheadChain kept(n, 3 * mines);
   struct KeepSteps final : MeasurementSink {
@@ -72,16 +75,16 @@ TEST(KalmanSmoother, TheOdometryKeptIsTheOdometryLinearisedAgain) {
   linearise_measurements(m, m.model, t.fixes, {1.0, false, FactorSet::odometry}, lin_kept, keep);
   for (int pass = 0; pass < 2; ++pass) {  // (the second pass at the first one's estimate)
     kept.reset_keeping_steps();
-    prior(kept);
+    prior(kept, lin_kept);
     kept.add_steps_again(keep.delta, lin_kept.position);
     ChainBuilder kept_builder(kept, mines, false, lin_kept);
     linearise_measurements(m, m.model, t.fixes, {1.0, false, FactorSet::without_odometry}, lin_kept, kept_builder);
     kept.solve();
 
     ArrowheadChain again(n, 3 * mines);
-    prior(again);
     KalmanLinearisation lin_again = lin_kept;
     if (pass == 0) lin_again = point;
+    prior(again, lin_again);
     ChainBuilder builder(again, mines, false, lin_again);
     linearise_measurements(m, m.model, t.fixes, {1.0, false, FactorSet::all}, lin_again, builder);
     again.solve();
