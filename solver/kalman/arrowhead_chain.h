@@ -37,12 +37,10 @@ class ArrowheadChain {
   /// add to the kept W_k).
   void reset_keeping_steps();
   /// Once after reset_keeping_steps() (std::logic_error otherwise): the steps
-  /// p_{k+1} - p_k = delta[k] again, with the information kept; the same system, bit for
-  /// bit, as add_step(k, W_k, delta[k]) for every k.
-  void add_steps_again(std::span<const Vec3> delta);
-  /// The same for unknowns taken as corrections from a reference point (p_k =
-  /// reference[k] + x_k): x_{k+1} - x_k = relative_step(delta[k], reference[k],
-  /// reference[k + 1]), bit for bit as add_step(k, W_k, that step) for every k.
+  /// p_{k+1} - p_k = delta[k] again, with the information kept, for unknowns taken as
+  /// corrections from a reference point (p_k = reference[k] + x_k): x_{k+1} - x_k =
+  /// relative_step(delta[k], reference[k], reference[k + 1]). The same system, bit for
+  /// bit, as add_step(k, W_k, that step) for every k.
   void add_steps_again(std::span<const Vec3> delta, std::span<const Vec3> reference);
   /// A step p_{k+1} - p_k = delta in terms of corrections from `from` (at p_k) and `to`
   /// (at p_{k+1}). Small against the positions once the reference is close: solving for
@@ -134,7 +132,6 @@ class ArrowheadChain {
   // Factors are added before a solve only: it works in place, and take_covariances() empties
   // the blocks (std::logic_error otherwise, until reset()).
   void require_factors(const char* caller) const;
-  void require_steps_kept(std::size_t deltas);  // add_steps_again's checks; marks the steps added
   void clear_factors();     // every factor but the steps' information
   void release_segments();  // what the forward pass left for the backward passes
 

@@ -63,6 +63,13 @@ struct Both {
     lambda += w * h.transpose() * h;
     eta += w * z * h.transpose();
   }
+  // A mixed row of random coefficients and value, of information weight + u (u in [-1, 1]).
+  void random_mixed(std::mt19937_64& rng, std::size_t k, double weight) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Eigen::RowVectorXd hm = Eigen::RowVectorXd::Zero(static_cast<Eigen::Index>(q));
+    for (std::size_t i = 0; i < q; ++i) hm(static_cast<Eigen::Index>(i)) = u(rng);
+    mixed(k, Eigen::RowVector3d(u(rng), u(rng), u(rng)), hm, u(rng), weight + u(rng));
+  }
 };
 
 TEST(ArrowheadChain, MatchesADenseLeastSquaresSolve) {
@@ -72,13 +79,8 @@ TEST(ArrowheadChain, MatchesADenseLeastSquaresSolve) {
   Both b(n, q);
   for (std::size_t k = 0; k + 1 < n; ++k) b.step(k, random_spd(rng, 50.0), Vec3(u(rng), u(rng), u(rng)));
   for (std::size_t k = 0; k < n; k += 7) b.position(k, random_spd(rng, 0.5), Vec3(u(rng), u(rng), 10 * u(rng)));
-  for (const std::size_t k : {std::size_t{11}, std::size_t{12}, std::size_t{30}, std::size_t{45}, std::size_t{59}}) {
-    for (int r = 0; r < 3; ++r) {
-      Eigen::RowVectorXd hm = Eigen::RowVectorXd::Zero(q);
-      for (std::size_t i = 0; i < q; ++i) hm(static_cast<Eigen::Index>(i)) = u(rng);
-      b.mixed(k, Eigen::RowVector3d(u(rng), u(rng), u(rng)), hm, u(rng), 3.0 + u(rng));
-    }
-  }
+  for (const std::size_t k : {std::size_t{11}, std::size_t{12}, std::size_t{30}, std::size_t{45}, std::size_t{59}})
+    for (int r = 0; r < 3; ++r) b.random_mixed(rng, k, 3.0);
   b.chain.solve();
   const Eigen::LDLT<MatX> dense(b.lambda);
   const VecX x = dense.solve(b.eta);
@@ -107,11 +109,7 @@ TEST(ArrowheadChain, HandsOverItsCovariancesSymmetricAndOnce) {
   for (std::size_t k = 0; k + 1 < n; ++k) b.step(k, random_spd(rng, 20.0), Vec3(u(rng), u(rng), u(rng)));
   for (std::size_t k = 0; k < n; k += 9) b.position(k, random_spd(rng, 0.5), Vec3(u(rng), u(rng), u(rng)));
   for (const std::size_t k : {std::size_t{5}, std::size_t{21}, std::size_t{39}})
-    for (int r = 0; r < 3; ++r) {
-      Eigen::RowVectorXd hm(q);
-      for (std::size_t i = 0; i < q; ++i) hm(static_cast<Eigen::Index>(i)) = u(rng);
-      b.mixed(k, Eigen::RowVector3d(u(rng), u(rng), u(rng)), hm, u(rng), 3.0 + u(rng));
-    }
+    for (int r = 0; r < 3; ++r) b.random_mixed(rng, k, 3.0);
   b.chain.solve_means();
   EXPECT_THROW(b.chain.take_covariances(), std::logic_error);  // no covariance pass yet
   b.chain.solve_covariances();
@@ -134,8 +132,9 @@ TEST(ArrowheadChain, HandsOverItsCovariancesSymmetricAndOnce) {
 }
 
 // The smoother without biases keeps the odometry's information between passes and adds
-// its steps again (reset_keeping_steps, add_steps_again): the system solved must be the
-// one a chain given every factor afresh solves, bit for bit, whatever the other factors;
+// its steps again (reset_keeping_steps, add_steps_again), as corrections from the pass's
+// point: the system solved must be the one a chain given every factor afresh (the steps
+// relative to that point) solves, bit for bit, whatever the other factors;
 // so must the means solved first and the covariances after (solve_means, then
 // solve_covariances) be solve()'s.
 TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStepsGivenAfresh) {
@@ -159,17 +158,20 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
       chain.add_mixed(k, Eigen::RowVector3d(u(pass), u(pass), u(pass)), hm, u(pass), 3.0 + u(pass));
     }
   };
+  std::vector<Vec3> reference;  // the corrections' reference point (the smoother's linearisation point)
+  for (std::size_t k = 0; k < n; ++k) reference.push_back(Vec3(100 * u(rng), 100 * u(rng), 10 * u(rng)));
   ArrowheadChain kept(n, q);
   for (std::size_t k = 0; k + 1 < n; ++k) kept.add_step(k, w[k], delta[k]);
   for (const unsigned pass : {1u, 2u, 3u}) {
     kept.reset_keeping_steps();
     other_factors(kept, pass);
-    kept.add_steps_again(delta);
+    kept.add_steps_again(delta, reference);
     EXPECT_THROW(kept.solve_covariances(), std::logic_error);  // the means first
     kept.solve_means();  // (as the smoother solves a pass that needs no covariance)
     ArrowheadChain fresh(n, q);
     other_factors(fresh, pass);
-    for (std::size_t k = 0; k + 1 < n; ++k) fresh.add_step(k, w[k], delta[k]);
+    for (std::size_t k = 0; k + 1 < n; ++k)
+      fresh.add_step(k, w[k], ArrowheadChain::relative_step(delta[k], reference[k], reference[k + 1]));
     fresh.solve();
     for (std::size_t k = 0; k < n; ++k) ASSERT_EQ(kept.mean(k), fresh.mean(k)) << "pass " << pass << ", step " << k;
     kept.solve_covariances();
@@ -183,7 +185,7 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
   }
   // One delta per step, and only while the steps' information is kept.
   kept.reset_keeping_steps();
-  EXPECT_THROW(kept.add_steps_again(std::span<const Vec3>(delta).first(n - 2)), std::invalid_argument);
+  EXPECT_THROW(kept.add_steps_again(std::span<const Vec3>(delta).first(n - 2), reference), std::invalid_argument);
   kept.release_workspace();
   EXPECT_THROW(kept.reset_keeping_steps(), std::logic_error);
 }
@@ -200,18 +202,17 @@ TEST(ArrowheadChain, RefusesCallsThatWouldSolveAnotherSystem) {
   EXPECT_THROW(chain.add_step(0, w, delta[0]), std::logic_error);  // would make it 2W
   const std::vector<Vec3> reference(4, Vec3::Zero());
   EXPECT_THROW(chain.add_steps_again(delta, std::span<const Vec3>(reference).first(3)), std::invalid_argument);
-  chain.add_steps_again(delta);
-  EXPECT_THROW(chain.add_steps_again(delta), std::logic_error);  // twice
-  EXPECT_THROW(chain.add_steps_again(delta, reference), std::logic_error);
+  chain.add_steps_again(delta, reference);
+  EXPECT_THROW(chain.add_steps_again(delta, reference), std::logic_error);  // twice
   chain.add_position(0, Mat3::Identity(), Vec3::Zero());
   chain.solve_means();
   EXPECT_LT((chain.mean(3) - Vec3(3.0, 0.0, 0.0)).norm(), 1e-12);  // the three steps from p_0 = 0
-  EXPECT_THROW(chain.add_steps_again(delta), std::logic_error);  // after a solve
+  EXPECT_THROW(chain.add_steps_again(delta, reference), std::logic_error);  // after a solve
   chain.release_workspace();
   EXPECT_THROW(chain.solve_covariances(), std::logic_error);  // the workspace is gone
   EXPECT_THROW(chain.reset_keeping_steps(), std::logic_error);
   chain.reset();  // a plain reset: nothing kept, steps are added afresh
-  EXPECT_THROW(chain.add_steps_again(delta), std::logic_error);
+  EXPECT_THROW(chain.add_steps_again(delta, reference), std::logic_error);
   chain.add_step(0, w, delta[0]);
   // No and one position: nothing to chain.
   ArrowheadChain none(0, 2);
@@ -219,7 +220,7 @@ TEST(ArrowheadChain, RefusesCallsThatWouldSolveAnotherSystem) {
   EXPECT_EQ(none.static_mean().size(), 2);
   ArrowheadChain one(1, 0);
   one.reset_keeping_steps();
-  one.add_steps_again({});
+  one.add_steps_again({}, std::vector<Vec3>{Vec3::Zero()});
   one.add_position(0, 2.0 * Mat3::Identity(), Vec3(1.0, 2.0, 3.0));
   one.solve();
   EXPECT_LT((one.mean(0) - Vec3(1.0, 2.0, 3.0)).norm(), 1e-12);
@@ -237,11 +238,7 @@ TEST(ArrowheadChain, CrossCovariancesMatchTheDenseInverse) {
   Both b(n, q);
   for (std::size_t k = 0; k + 1 < n; ++k) b.step(k, random_spd(rng, 20.0), Vec3(u(rng), u(rng), u(rng)));
   for (std::size_t k = 0; k < n; k += 9) b.position(k, random_spd(rng, 0.5), Vec3(u(rng), u(rng), u(rng)));
-  const auto mixed_row = [&](std::size_t k) {
-    Eigen::RowVectorXd hm = Eigen::RowVectorXd::Zero(q);
-    for (std::size_t i = 0; i < q; ++i) hm(static_cast<Eigen::Index>(i)) = u(rng);
-    b.mixed(k, Eigen::RowVector3d(u(rng), u(rng), u(rng)), hm, u(rng), 2.0 + u(rng));
-  };
+  const auto mixed_row = [&](std::size_t k) { b.random_mixed(rng, k, 2.0); };
   mixed_row(0);
   for (std::size_t k = 20; k < 30; ++k) mixed_row(k);
   mixed_row(41);
