@@ -86,8 +86,8 @@ class H5File {
   std::vector<std::int32_t> read_ints(const std::string& dataset, int rank = 0) const;
   /// Reads into a caller-sized buffer (no extra copy); sizes must match.
   void read_doubles_into(const std::string& dataset, std::span<double> out) const;
-  /// Reads a 2-D dataset of rows x columns.size() values, in one contiguous read, into
-  /// one flat vector per column (each sized to the rows): a mission's N x 3 arrays.
+  /// Reads a 2-D dataset of rows x columns.size() values, in contiguous blocks of rows,
+  /// into one flat vector per column (each sized to the rows): a mission's N x 3 arrays.
   void read_columns_into(const std::string& dataset, std::span<std::vector<double>* const> columns) const;
 
   /// Creates a group (and its parents) if missing.
@@ -124,6 +124,13 @@ class H5File {
   /// The shape, once class and stored size are known to be readable (integers or numbers).
   H5Shape checked_shape(const std::string& dataset, bool integers, int rank = 0) const;
   void read_checked(const std::string& dataset, std::span<double> out) const;
+  /// Rows [first, first + rows) of a dataset of `columns` columns.
+  struct RowBlock {
+    std::size_t first, rows, columns;
+  };
+  /// A block of rows of an open dataset, its type checked, as doubles into out (rows x
+  /// columns values, row-major).
+  void read_rows(std::int64_t dataset, const std::string& name, RowBlock block, std::span<double> out) const;
   H5Handle file_;
   std::string path_;
 };

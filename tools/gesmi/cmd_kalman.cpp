@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "io/output/output_set.h"
 #include "io/output/atomic_output.h"
@@ -85,7 +86,8 @@ int run_kalman(std::span<const std::string> args) {
   file.timings_ms["load"] += elapsed_ms(start);
   const Containment c = three_sigma_containment(file.result, mission);
   file.containment = c;
-  file.time = mission.time;
+  const std::size_t steps = mission.size();
+  file.time = std::move(mission.time);  // (no second copy: 80 MB at 10^7 steps)
   file.epoch = mission.epoch;
   file.origin = mission.origin;
   file.model = mission.model;
@@ -115,7 +117,7 @@ int run_kalman(std::span<const std::string> args) {
     report.inputs(v, file_options);
     report.output(output);
     report.timings(file.timings_ms);
-    report["kalman"] = {{"steps", mission.size()},
+    report["kalman"] = {{"steps", steps},
                         {"mines", mission.mine_count},
                         {"containment_3sigma_horizontal", io::number_json(c.horizontal)},
                         {"containment_3sigma_vertical", io::number_json(c.vertical)},
@@ -132,7 +134,7 @@ int run_kalman(std::span<const std::string> args) {
     add_kalman_checks(report["kalman"], file.result);
   } else {
     std::printf("kalman smoother: %zu steps in %.1f ms, %s after %d linearisations (last step %.2g m), written to %s",
-                mission.size(), file.timings_ms["smooth"],
+                steps, file.timings_ms["smooth"],
                 k.converged ? "converged" : k.stalled ? "stopped at the rounding floor" : "NOT converged", k.iterations,
                 k.last_step, output.c_str());
     if (!std::isnan(c.horizontal))

@@ -1,0 +1,90 @@
+// H5File::read_columns_into reads N x k datasets in blocks of rows (no row-major copy of
+// the whole dataset): files written by Debian's h5py, independently of gesmi's writer,
+// with row counts around the block size, are read value for value, and a value refused
+// in a later block is named by its index in the whole dataset.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "io/format_error.h"
+#include "io/hdf5/h5_file.h"
+#include "tests/support/run_command.h"
+
+namespace gesmi::io {
+namespace {
+
+// A file made by a few lines of h5py ('f' is the file open for writing).
+std::string written_by_h5py(const std::string& name, const std::string& python) {
+  const std::string folder = test::temp_folder(name);
+  const std::string path = folder + "/columns.h5", script = folder + "/write.py";
+  std::ofstream(script) << "import h5py, numpy as np, sys\nf = h5py.File(sys.argv[1], 'w')\n" << python << "\nf.close()\n";
+  EXPECT_EQ(std::system(("/usr/bin/python3 " + script + " " + path).c_str()), 0) << python;
+  return path;
+}
+
+// Value (r, c) of the datasets below: exact in doubles and in 64-bit integers.
+double expected(std::size_t r, std::size_t c) { return 4.0 * static_cast<double>(r) + static_cast<double>(c); }
+
+TEST(H5Columns, EveryRowIsReadAroundAndAcrossTheBlocks) {
+  // 2^16 rows a block: one row fewer, exactly one block, one more, several and a rest.
+  const std::vector<std::size_t> row_counts = {1, 65535, 65536, 65537, 3 * 65536 + 5};
+  std::string python = "for n in [1, 65535, 65536, 65537, 3 * 65536 + 5]:\n"
+                       "    v = 4.0 * np.arange(n)[:, None] + np.arange(3)[None, :]\n"
+                       "    f[f'd{n}'] = v\n"
+                       "    f[f'i{n}'] = v.astype(np.int64)\n"
+                       "    f[f's{n}'] = v.astype(np.int32)\n";
+  const H5File file = H5File::open_read(written_by_h5py("h5-columns", python));
+  for (const std::size_t n : row_counts)
+    for (const char* kind : {"d", "i", "s"}) {
+      const std::string dataset = kind + std::to_string(n);
+      SCOPED_TRACE(dataset);
+      std::vector<double> a{7.0}, b, c(1000, 7.0);  // earlier contents and sizes are replaced
+      std::vector<double>* columns[3] = {&a, &b, &c};
+      file.read_columns_into(dataset, std::span<std::vector<double>* const>(columns, 3));
+      std::size_t wrong = 0;
+      for (std::size_t col = 0; col < 3; ++col) {
+        ASSERT_EQ(columns[col]->size(), n);
+        for (std::size_t r = 0; r < n; ++r) wrong += (*columns[col])[r] != expected(r, col) ? 1 : 0;
+      }
+      EXPECT_EQ(wrong, 0u);
+    }
+}
+
+TEST(H5Columns, AnIntegerTooLargeInALaterBlockIsNamedByItsIndex) {
+  const std::string path = written_by_h5py("h5-columns-wide",
+                                           "v = np.zeros((3 * 65536 + 5, 3), dtype=np.int64)\n"
+                                           "v[65546, 1] = 2**60\n"
+                                           "f['wide'] = v\n");
+  const H5File file = H5File::open_read(path);
+  std::vector<double> a, b, c;
+  std::vector<double>* columns[3] = {&a, &b, &c};
+  try {
+    file.read_columns_into("wide", std::span<std::vector<double>* const>(columns, 3));
+    ADD_FAILURE() << "accepted";
+  } catch (const FormatError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(path + ": ", 0), 0u) << what;
+    // Row 65546, column 1 of a row-major N x 3 dataset: value 3 * 65546 + 1.
+    EXPECT_NE(what.find("value 196639 is an integer too large"), std::string::npos) << what;
+  }
+}
+
+TEST(H5Columns, AWrongColumnCountIsRefusedBeforeReading) {
+  const H5File file = H5File::open_read(written_by_h5py("h5-columns-four", "f['four'] = np.zeros((70000, 4))\n"));
+  std::vector<double> a, b, c;
+  std::vector<double>* columns[3] = {&a, &b, &c};
+  try {
+    file.read_columns_into("four", std::span<std::vector<double>* const>(columns, 3));
+    ADD_FAILURE() << "accepted";
+  } catch (const FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("expected 3 columns, found 4"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(a.empty());
+}
+
+}  // namespace
+}  // namespace gesmi::io
