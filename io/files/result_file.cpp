@@ -110,15 +110,15 @@ SolveMode mode_named(const std::string& name) {
 // Interval arrays as N x 3 lower / upper datasets (empty bounds as NaN), one buffer
 // at a time (the largest memory of a solve is that of its result's writing).
 void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interval>* axes[3], std::size_t n) {
-  std::vector<double> rows(3 * n);
-  for (const bool upper : {false, true}) {
-    for (std::size_t k = 0; k < n; ++k)
-      for (std::size_t c = 0; c < 3; ++c) {
-        const Interval& x = (*axes[c])[k];
-        rows[3 * k + c] = x.is_empty() ? NAN : (upper ? x.hi() : x.lo());
-      }
-    write_digested(f, prefix + (upper ? "/upper" : "/lower"), rows, n, kResultDigest, 3, 2);
-  }
+  for (const bool upper : {false, true})
+    write_digested_in_blocks(f, prefix + (upper ? "/upper" : "/lower"), n, 3, 2, kResultDigest,
+                             [&](std::size_t first, std::size_t count, std::span<double> rows) {
+                               for (std::size_t k = 0; k < count; ++k)
+                                 for (std::size_t c = 0; c < 3; ++c) {
+                                   const Interval& x = (*axes[c])[first + k];
+                                   rows[3 * k + c] = x.is_empty() ? NAN : (upper ? x.hi() : x.lo());
+                                 }
+                             });
 }
 
 [[noreturn]] void bad(const H5File& f, const std::string& object, const std::string& reason) {

@@ -48,6 +48,23 @@ std::string write_digested(H5File& f, const std::string& dataset, std::span<cons
                            std::size_t rows, DigestKind kind, std::size_t columns, int rank) {
   return write_with_digest(f, dataset, values, rows, columns, rank, kind);
 }
+std::string write_digested_in_blocks(H5File& f, const std::string& dataset, std::size_t rows, std::size_t columns,
+                                     int rank, DigestKind kind, const H5File::RowFiller& fill) {
+  // The digest of digest() above, its values added block by block.
+  Digest h(kind);
+  h.add(std::string_view(dataset));
+  h.add_count(rows);
+  h.add_count(columns);
+  h.add_count(rows * columns);
+  f.write_in_blocks(dataset, rows, columns, rank, [&](std::size_t first, std::size_t count, std::span<double> out) {
+    fill(first, count, out);
+    h.add_bytes(out.data(), out.size_bytes());
+  });
+  const std::string hex = h.hex();
+  f.set_attribute(dataset, digest_name(kind), hex);
+  return hex;
+}
+
 std::string verify_digest(const H5File& f, const std::string& dataset, std::span<const double> values,
                           std::size_t rows, std::size_t columns, DigestKind kind) {
   return verify(f, dataset, values, rows, columns, kind);

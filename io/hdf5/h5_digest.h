@@ -23,6 +23,11 @@ std::string write_digested(H5File& file, const std::string& dataset, std::span<c
 std::string write_digested(H5File& file, const std::string& dataset, std::span<const std::int32_t> values,
                            std::size_t rows, DigestKind kind, std::size_t columns = 1, int rank = 1);
 
+/// Writes a dataset of doubles in blocks (as H5File::write_in_blocks) and its digest
+/// attribute, the same as write_digested of all its values; returns the digest.
+std::string write_digested_in_blocks(H5File& file, const std::string& dataset, std::size_t rows, std::size_t columns,
+                                     int rank, DigestKind kind, const H5File::RowFiller& fill);
+
 /// Checks values read from `dataset` (rows x columns) against its digest attribute of
 /// that kind; FormatError naming the file and dataset when it is missing or differs.
 /// Returns the digest.

@@ -2,6 +2,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <type_traits>
 
@@ -173,6 +174,33 @@ void H5File::write(const std::string& dataset, std::span<const std::int32_t> val
   if (values.size() != rows * columns) fail(dataset, "internal shape mismatch");
   const hsize_t dims[2] = {rows, columns};
   write_dataset(file_.get(), dataset, values, dims, rank, H5T_NATIVE_INT32, H5T_STD_I32LE, path_);
+}
+
+void H5File::write_in_blocks(const std::string& dataset, std::size_t rows, std::size_t columns, int rank,
+                             const RowFiller& fill) {
+  ensure_parent_groups(dataset);
+  const hsize_t dims[2] = {rows, columns};
+  const H5Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
+  const H5Handle d(H5Dcreate2(file_.get(), dataset.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                              H5P_DEFAULT),
+                   H5Dclose);
+  if (!d.valid()) fail(dataset, "cannot create the dataset (disk full?)");
+  if (rows == 0 || columns == 0) return;
+  const std::size_t block_rows = std::min(rows, kBlockRows);
+  std::vector<double> block(block_rows * columns);
+  for (std::size_t first = 0; first < rows; first += block_rows) {
+    const std::size_t count = std::min(block_rows, rows - first);
+    const std::span<double> values(block.data(), count * columns);
+    fill(first, count, values);
+    // The block's rows of the file's dataset, from a flat buffer of as many values.
+    const hsize_t start[2] = {first, 0}, extent[2] = {count, columns};
+    const hsize_t size = values.size();
+    const H5Handle file_space(H5Dget_space(d.get()), H5Sclose), memory_space(H5Screate_simple(1, &size, nullptr), H5Sclose);
+    if (!file_space.valid() || !memory_space.valid() ||
+        H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, extent, nullptr) < 0 ||
+        H5Dwrite(d.get(), H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(), H5P_DEFAULT, values.data()) < 0)
+      fail(dataset, "cannot write (disk full?)");
+  }
 }
 
 void H5File::write_3d(const std::string& dataset, std::span<const double> values, std::size_t d0, std::size_t d1,

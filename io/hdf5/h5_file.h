@@ -10,6 +10,7 @@
 // overflow or an allocation the file cannot back (docs/formats.md, "Limits").
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -97,6 +98,17 @@ class H5File {
              int rank = 1);
   void write(const std::string& dataset, std::span<const std::int32_t> values, std::size_t rows,
              std::size_t columns = 1, int rank = 1);
+
+  /// Rows of a dataset written in blocks: fill(first, count, out) puts rows [first, first
+  /// + count) in out, row-major (count x columns values).
+  using RowFiller = std::function<void(std::size_t first, std::size_t count, std::span<double> out)>;
+  /// Writes a rows x columns dataset of doubles (1-D when rank is 1) in blocks of at most
+  /// kBlockRows rows through one small buffer: no row-major copy of the whole dataset
+  /// (240 MB an N x 3 dataset at 10^7 steps).
+  void write_in_blocks(const std::string& dataset, std::size_t rows, std::size_t columns, int rank,
+                       const RowFiller& fill);
+  /// Rows per block of write_in_blocks and read_columns_into: 1.5 MB for three columns.
+  static constexpr std::size_t kBlockRows = std::size_t{1} << 16;
 
   /// Writes a 3-D dataset (e.g. N x 3 x 3 covariances), row-major.
   void write_3d(const std::string& dataset, std::span<const double> values, std::size_t d0, std::size_t d1,

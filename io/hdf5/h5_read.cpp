@@ -17,8 +17,6 @@ namespace {
 constexpr double kLargestExactInteger = 9007199254740992.0;
 // deflate, the strongest filter HDF5 ships, compresses at most about 1032:1.
 constexpr double kLargestCompression = 1100.0;
-// Rows per read of read_columns_into: 1.5 MB buffers for three columns.
-constexpr std::size_t kColumnBlockRows = std::size_t{1} << 16;
 
 // Whether rows x columns is the whole dataset.
 bool whole_dataset(hid_t dataset, std::size_t rows, std::size_t columns) {
@@ -155,7 +153,7 @@ void H5File::read_columns_into(const std::string& dataset, std::span<std::vector
   // Contiguous reads of blocks of rows through one small buffer: a strided read per
   // column costs more than the copy, and a row-major copy of the whole dataset would be
   // one more array to fault in and zero (240 MB a dataset at 10^7 steps).
-  const std::size_t block_rows = std::min(s.rows, kColumnBlockRows);
+  const std::size_t block_rows = std::min(s.rows, kBlockRows);
   std::vector<double> rows(block_rows * width);
   const H5Handle d = open_dataset(dataset);
   for (std::size_t first = 0; first < s.rows; first += block_rows) {

@@ -1,7 +1,9 @@
-// H5File::read_columns_into reads N x k datasets in blocks of rows (no row-major copy of
-// the whole dataset): files written by Debian's h5py, independently of gesmi's writer,
-// with row counts around the block size, are read value for value, and a value refused
-// in a later block is named by its index in the whole dataset.
+// Datasets read and written in blocks of rows (no row-major copy of the whole dataset):
+// H5File::read_columns_into reads files written by Debian's h5py, independently of
+// gesmi's writer, with row counts around the block size, value for value, and names a
+// value refused in a later block by its index in the whole dataset; datasets written by
+// write_digested_in_blocks read back by h5py value for value, with the digest of the
+// whole-array writer.
 
 #include <gtest/gtest.h>
 
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "io/format_error.h"
+#include "io/hdf5/h5_digest.h"
 #include "io/hdf5/h5_file.h"
 #include "tests/support/run_command.h"
 
@@ -29,7 +32,7 @@ std::string written_by_h5py(const std::string& name, const std::string& python) 
 // Value (r, c) of the datasets below: exact in doubles and in 64-bit integers.
 double expected(std::size_t r, std::size_t c) { return 4.0 * static_cast<double>(r) + static_cast<double>(c); }
 
-TEST(H5Columns, EveryRowIsReadAroundAndAcrossTheBlocks) {
+TEST(H5Blocks, EveryRowIsReadAroundAndAcrossTheBlocks) {
   // 2^16 rows a block: one row fewer, exactly one block, one more, several and a rest.
   const std::vector<std::size_t> row_counts = {1, 65535, 65536, 65537, 3 * 65536 + 5};
   std::string python = "for n in [1, 65535, 65536, 65537, 3 * 65536 + 5]:\n"
@@ -54,7 +57,7 @@ TEST(H5Columns, EveryRowIsReadAroundAndAcrossTheBlocks) {
     }
 }
 
-TEST(H5Columns, AnIntegerTooLargeInALaterBlockIsNamedByItsIndex) {
+TEST(H5Blocks, AnIntegerTooLargeInALaterBlockIsNamedByItsIndex) {
   const std::string path = written_by_h5py("h5-columns-wide",
                                            "v = np.zeros((3 * 65536 + 5, 3), dtype=np.int64)\n"
                                            "v[65546, 1] = 2**60\n"
@@ -73,7 +76,7 @@ TEST(H5Columns, AnIntegerTooLargeInALaterBlockIsNamedByItsIndex) {
   }
 }
 
-TEST(H5Columns, AWrongColumnCountIsRefusedBeforeReading) {
+TEST(H5Blocks, AWrongColumnCountIsRefusedBeforeReading) {
   const H5File file = H5File::open_read(written_by_h5py("h5-columns-four", "f['four'] = np.zeros((70000, 4))\n"));
   std::vector<double> a, b, c;
   std::vector<double>* columns[3] = {&a, &b, &c};
@@ -84,6 +87,46 @@ TEST(H5Columns, AWrongColumnCountIsRefusedBeforeReading) {
     EXPECT_NE(std::string(e.what()).find("expected 3 columns, found 4"), std::string::npos) << e.what();
   }
   EXPECT_TRUE(a.empty());
+}
+
+TEST(H5Blocks, WrittenInBlocksAsWholeWithTheSameDigest) {
+  const std::string folder = test::temp_folder("h5-blocks-write");
+  for (const std::size_t n : {std::size_t{1}, std::size_t{65536}, std::size_t{3 * 65536 + 5}})
+    for (const std::size_t columns : {std::size_t{1}, std::size_t{3}}) {
+      const std::string tag = std::to_string(n) + "x" + std::to_string(columns);
+      SCOPED_TRACE(tag);
+      const int rank = columns == 1 ? 1 : 2;
+      std::vector<double> whole(n * columns);
+      for (std::size_t r = 0; r < n; ++r)
+        for (std::size_t c = 0; c < columns; ++c) whole[r * columns + c] = expected(r, c);
+      const std::string in_blocks = folder + "/blocks-" + tag + ".h5", at_once = folder + "/whole-" + tag + ".h5";
+      std::size_t rows_filled = 0;
+      {
+        H5File f = H5File::create(in_blocks);
+        const std::string digest = write_digested_in_blocks(
+            f, "/g/v", n, columns, rank, DigestKind::xxh128, [&](std::size_t first, std::size_t count, std::span<double> out) {
+              ASSERT_EQ(out.size(), count * columns);
+              ASSERT_EQ(first, rows_filled);  // in order, each row once
+              rows_filled += count;
+              for (std::size_t r = 0; r < count; ++r)
+                for (std::size_t c = 0; c < columns; ++c) out[r * columns + c] = expected(first + r, c);
+            });
+        H5File g = H5File::create(at_once);
+        EXPECT_EQ(digest, write_digested(g, "/g/v", whole, n, DigestKind::xxh128, columns, rank));
+        f.close();
+        g.close();
+      }
+      EXPECT_EQ(rows_filled, n);
+      // h5py reads the shape and every value (an independent reader).
+      const std::string script = folder + "/check.py";
+      std::ofstream(script) << "import h5py, numpy as np, sys\n"
+                            << "v = h5py.File(sys.argv[1], 'r')['/g/v'][...]\n"
+                            << "n, k = " << n << ", " << columns << "\n"
+                            << "want = 4.0 * np.arange(n)[:, None] + np.arange(k)[None, :]\n"
+                            << "want = want[:, 0] if k == 1 else want\n"
+                            << "sys.exit(0 if v.shape == want.shape and (v == want).all() else 1)\n";
+      EXPECT_EQ(std::system(("/usr/bin/python3 " + script + " " + in_blocks).c_str()), 0);
+    }
 }
 
 }  // namespace
