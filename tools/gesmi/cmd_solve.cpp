@@ -100,6 +100,10 @@ int run_solve(std::span<const std::string> args) {
     timings["load"] += elapsed_ms(start);
     diagnose_inconsistency(mission, options, result.solution);
   }
+  // The earlier result is done with (its tube and waterfall went into the solve): not
+  // held in memory while the new one is written (the peak of a warm rerun).
+  options.warm_from = nullptr;
+  previous = MissionSolution();
   progress.update(-1.0, "writing " + output);
   const MissionSolution& s = result.solution;
   timings.insert(s.timings_ms.begin(), s.timings_ms.end());
