@@ -18,11 +18,14 @@
 namespace gesmi::io {
 namespace {
 
-// RGB rows to a PNG file with libpng's fast settings for plots: no row filters, zlib
-// level 1 with run-length matching (flat fills compress to runs; 3-4 times faster than
-// the simplified API's defaults here). libpng reports errors by longjmp to this frame,
-// which holds no C++ object; the two pointers are not modified after setjmp.
-bool write_rgb_png(std::FILE* file, const unsigned char* rgb, int width, int height) {
+// Cairo's RGB24 pixels (32-bit words 0x00RRGGBB in native order) to an RGB PNG file,
+// repacked a row at a time (a whole RGB copy of the waterfall picture was 4.7 MB of
+// fresh memory), with libpng's fast settings for plots: no row filters, zlib level 1
+// with run-length matching (flat fills compress to runs; 3-4 times faster than the
+// simplified API's defaults here). libpng reports errors by longjmp to this frame: the
+// row buffer is made before setjmp (a jump back skips no destructor), and neither it nor
+// the two pointers are reassigned after setjmp.
+bool write_rgb_png(std::FILE* file, const unsigned char* pixels, int width, int height, int stride) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
@@ -30,6 +33,7 @@ bool write_rgb_png(std::FILE* file, const unsigned char* rgb, int width, int hei
     png_destroy_write_struct(&png, nullptr);
     return false;
   }
+  std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * 3);
   if (setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
     return false;
@@ -41,8 +45,18 @@ bool write_rgb_png(std::FILE* file, const unsigned char* rgb, int width, int hei
   png_set_compression_level(png, 1);
   png_set_compression_strategy(png, Z_RLE);
   png_write_info(png, info);
-  for (int row = 0; row < height; ++row)
-    png_write_row(png, rgb + static_cast<std::ptrdiff_t>(row) * width * 3);
+  for (int row = 0; row < height; ++row) {
+    const unsigned char* words = pixels + static_cast<std::ptrdiff_t>(row) * stride;
+    for (int col = 0; col < width; ++col) {
+      std::uint32_t word;
+      std::memcpy(&word, words + static_cast<std::ptrdiff_t>(col) * 4, sizeof word);
+      unsigned char* o = &rgb[static_cast<std::size_t>(col) * 3];
+      o[0] = static_cast<unsigned char>(word >> 16);
+      o[1] = static_cast<unsigned char>(word >> 8);
+      o[2] = static_cast<unsigned char>(word);
+    }
+    png_write_row(png, rgb.data());
+  }
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
   return true;
@@ -143,22 +157,10 @@ void Canvas::axes(const DataFrame& f, const std::string& x_label, const std::str
 void Canvas::save_png(const std::string& path) {
   AtomicOutput out(path);
   cairo_surface_flush(surface_);
-  // Cairo's RGB24 pixels are 32-bit words 0x00RRGGBB in native order: repack as RGB bytes.
   const int width = cairo_image_surface_get_width(surface_), height = cairo_image_surface_get_height(surface_);
   const int stride = cairo_image_surface_get_stride(surface_);
-  const unsigned char* data = cairo_image_surface_get_data(surface_);
-  std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
-  for (int row = 0; row < height; ++row)
-    for (int col = 0; col < width; ++col) {
-      std::uint32_t word;
-      std::memcpy(&word, data + static_cast<std::ptrdiff_t>(row) * stride + col * 4, sizeof word);
-      unsigned char* o = &rgb[(static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(col)) * 3];
-      o[0] = static_cast<unsigned char>(word >> 16);
-      o[1] = static_cast<unsigned char>(word >> 8);
-      o[2] = static_cast<unsigned char>(word);
-    }
   std::FILE* file = std::fopen(out.temp_path().c_str(), "wb");
-  const bool written = file && write_rgb_png(file, rgb.data(), width, height);
+  const bool written = file && write_rgb_png(file, cairo_image_surface_get_data(surface_), width, height, stride);
   const bool closed = file && std::fclose(file) == 0;
   if (!written || !closed) throw FormatError(path + ": cannot write the PNG picture (disk full?)");
   out.commit();

@@ -1,11 +1,14 @@
-// The pictures are written atomically as valid PNG files.
+// The pictures are written atomically as valid PNG files, whose pixels Pillow (an
+// independent decoder) reads as drawn.
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
 #include "io/format_error.h"
+#include "io/plot/canvas.h"
 #include "io/plot/plot_envelope.h"
 #include "io/plot/plot_waterfall.h"
 #include "solver/solve/solve_mission.h"
@@ -48,6 +51,31 @@ TEST(Plot, WritesTheEnvelopeAndTheWaterfallAsPng) {
   EXPECT_TRUE(is_png(folder + "/waterfall.png"));
   // Only the two pictures: no temporary file left behind.
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator()), 2);
+}
+
+TEST(Plot, PixelsAreWrittenInTheirColoursRowByRow) {
+  // Three primaries and a mixed colour in separate boxes on white, in a picture whose
+  // rows are not a multiple of anything in particular (odd width and height).
+  const std::string path = test::temp_folder("plot-pixels") + "/canvas.png";
+  {
+    io::Canvas canvas(203, 151);
+    canvas.fill_rect(10, 10, 20, 20, io::Rgb{1, 0, 0});
+    canvas.fill_rect(50, 10, 20, 20, io::Rgb{0, 1, 0});
+    canvas.fill_rect(90, 10, 20, 20, io::Rgb{0, 0, 1});
+    canvas.fill_rect(150, 120, 40, 25, io::Rgb{1, 1, 0});
+    canvas.save_png(path);
+  }
+  // x, y, expected R, G, B (0-255) of the pixels Pillow reads.
+  const std::string script = test::temp_folder("plot-pixels-check") + "/check.py";
+  std::ofstream(script) << "import sys\nfrom PIL import Image\n"
+                           "im = Image.open(sys.argv[1]).convert('RGB')\n"
+                           "want = [(20, 20, (255, 0, 0)), (60, 20, (0, 255, 0)), (100, 20, (0, 0, 255)),\n"
+                           "        (170, 140, (255, 255, 0)), (0, 0, (255, 255, 255)), (202, 150, (255, 255, 255)),\n"
+                           "        (40, 100, (255, 255, 255))]\n"
+                           "bad = [(x, y, im.getpixel((x, y)), c) for x, y, c in want if im.getpixel((x, y)) != c]\n"
+                           "print(im.size, bad)\n"
+                           "sys.exit(0 if im.size == (203, 151) and not bad else 1)\n";
+  EXPECT_EQ(std::system(("/usr/bin/python3 " + script + " " + path).c_str()), 0);
 }
 
 TEST(Plot, ReportsAnUnwritableFolderAndLeavesNothing) {
