@@ -178,6 +178,7 @@ void H5File::write(const std::string& dataset, std::span<const std::int32_t> val
 
 void H5File::write_in_blocks(const std::string& dataset, std::size_t rows, std::size_t columns, int rank,
                              const RowFiller& fill) {
+  if ((rank != 1 && rank != 2) || (rank == 1 && columns != 1)) fail(dataset, "internal shape mismatch");
   ensure_parent_groups(dataset);
   const hsize_t dims[2] = {rows, columns};
   const H5Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);

@@ -89,6 +89,7 @@ class H5File {
   void read_doubles_into(const std::string& dataset, std::span<double> out) const;
   /// Reads a 2-D dataset of rows x columns.size() values, in contiguous blocks of rows,
   /// into one flat vector per column (each sized to the rows): a mission's N x 3 arrays.
+  /// On a FormatError from a later block the columns are left sized and partly filled.
   void read_columns_into(const std::string& dataset, std::span<std::vector<double>* const> columns) const;
 
   /// Creates a group (and its parents) if missing.

@@ -21,9 +21,10 @@ constexpr double kLargestCompression = 1100.0;
 // Whether rows x columns is the whole dataset.
 bool whole_dataset(hid_t dataset, std::size_t rows, std::size_t columns) {
   const H5Handle space(H5Dget_space(dataset), H5Sclose);
+  const int rank = space.valid() ? H5Sget_simple_extent_ndims(space.get()) : -1;
   hsize_t dims[2] = {0, 0};
-  const int rank = space.valid() ? H5Sget_simple_extent_dims(space.get(), dims, nullptr) : -1;
-  return rank >= 1 && dims[0] == rows && (rank == 1 || dims[1] == columns);
+  if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(space.get(), dims, nullptr) != rank) return false;
+  return dims[0] == rows && (rank == 1 || dims[1] == columns);
 }
 
 // Why values of this stored type cannot be read as doubles, or empty.
@@ -114,7 +115,7 @@ void H5File::read_rows(std::int64_t d, const std::string& dataset, RowBlock bloc
     if (!file_space.valid() || !memory_space.valid() ||
         H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr) < 0)
       fail(dataset, "cannot select rows " + std::to_string(block.first) + " to " +
-                        std::to_string(block.first + block.rows) + " (damaged file?)");
+                        std::to_string(block.first + block.rows - 1) + " (damaged file?)");
     memory = memory_space.get();
     file = file_space.get();
   }

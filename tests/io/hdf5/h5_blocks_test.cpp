@@ -32,11 +32,11 @@ std::string written_by_h5py(const std::string& name, const std::string& python) 
 // Value (r, c) of the datasets below: exact in doubles and in 64-bit integers.
 double expected(std::size_t r, std::size_t c) { return 4.0 * static_cast<double>(r) + static_cast<double>(c); }
 
-// Row counts around the blocks: one row, one fewer than a block, a block, one more,
+// Row counts around the blocks: none, one row, one fewer than a block, a block, one more,
 // several and a rest.
 std::vector<std::size_t> row_counts() {
   const std::size_t b = H5File::kBlockRows;
-  return {1, b - 1, b, b + 1, 3 * b + 5};
+  return {0, 1, b - 1, b, b + 1, 3 * b + 5};
 }
 
 std::string python_list(const std::vector<std::size_t>& values) {
