@@ -115,14 +115,16 @@ void ArrowheadChain::add_step_terms(std::size_t k, const Mat3& w, const Vec3& de
   eta_[k + 1] += w * delta;
 }
 
-void ArrowheadChain::add_steps_again(std::span<const Vec3> delta, std::span<const Vec3> reference) {
+void ArrowheadChain::add_steps_again(std::span<const Vec3> delta, std::span<const double> reference) {
   if (steps_ != Steps::kept || stage_ != Stage::factors)
     throw std::logic_error("ArrowheadChain::add_steps_again: once after reset_keeping_steps()");
   if (delta.size() != step_info_.size()) throw std::invalid_argument("ArrowheadChain::add_steps_again: one delta per step");
-  if (reference.size() != n_) throw std::invalid_argument("ArrowheadChain::add_steps_again: one reference per position");
+  if (reference.size() != 3 * n_)
+    throw std::invalid_argument("ArrowheadChain::add_steps_again: one reference (three numbers) per position");
   steps_ = Steps::added_again;
+  const auto point = [&](std::size_t k) { return Eigen::Map<const Vec3>(reference.data() + 3 * k); };
   for (std::size_t k = 0; k < delta.size(); ++k)
-    add_step_terms(k, step_info_[k], relative_step(delta[k], reference[k], reference[k + 1]));
+    add_step_terms(k, step_info_[k], relative_step(delta[k], point(k), point(k + 1)));
 }
 
 void ArrowheadChain::add_position_row(std::size_t k, const Row3& hp, double z, double w) {

@@ -38,10 +38,10 @@ class ArrowheadChain {
   void reset_keeping_steps();
   /// Once after reset_keeping_steps() (std::logic_error otherwise): the steps
   /// p_{k+1} - p_k = delta[k] again, with the information kept, for unknowns taken as
-  /// corrections from a reference point (p_k = reference[k] + x_k): x_{k+1} - x_k =
-  /// relative_step(delta[k], reference[k], reference[k + 1]). The same system, bit for
-  /// bit, as add_step(k, W_k, that step) for every k.
-  void add_steps_again(std::span<const Vec3> delta, std::span<const Vec3> reference);
+  /// corrections from a reference point (p_k = r_k + x_k, r_k the three numbers
+  /// reference[3k..3k+2]): x_{k+1} - x_k = relative_step(delta[k], r_k, r_{k+1}). The same
+  /// system, bit for bit, as add_step(k, W_k, that step) for every k.
+  void add_steps_again(std::span<const Vec3> delta, std::span<const double> reference);
   /// A step p_{k+1} - p_k = delta in terms of corrections from `from` (at p_k) and `to`
   /// (at p_{k+1}). Small against the positions once the reference is close: solving for
   /// corrections keeps the chain's rounding to the corrections' size (issue: whole-process

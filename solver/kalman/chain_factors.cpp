@@ -16,7 +16,7 @@ void ChainFactors::odometry(std::size_t k, const Mat3d& information, const Vec3d
   // p_{k+1} - p_k = delta + J (b - b_lin) and G_{k+1} = G_k + J leave, with
   // p'_lin,k = p_lin,k - G_k b_lin, x_{k+1} - x_k = delta - (p_lin,k+1 - p_lin,k).
   if (biases_) g_[k + 1] = g_[k] + jacobian;
-  const std::vector<Vec3d>& p = point_.position;
+  const FlatPoints& p = point_.position;
   chain_step(k, information, ArrowheadChain::relative_step(delta, p[k], p[k + 1]));
 }
 

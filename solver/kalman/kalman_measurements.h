@@ -41,9 +41,35 @@ BiasVec bias_prior_sigma(const SensorModel& model, double noise_factor);
 /// Variance of a uniform law on [-bound, bound], scaled by the noise factor.
 inline double uniform_variance(double bound, double factor) { return factor * bound * bound / 3.0; }
 
+/// Points p_0..p_{n-1} stored flat, three numbers each (x0 y0 z0 x1 ...): the
+/// linearisation point's positions, whose storage becomes the smoother's means (at 10^7
+/// steps a second 240 MB array cost the kernel's zeroing of its pages).
+class FlatPoints {
+ public:
+  void assign(std::size_t n, const Vec3d& p) {
+    values_.resize(3 * n);
+    for (std::size_t k = 0; k < n; ++k) (*this)[k] = p;
+  }
+  void push_back(const Vec3d& p) { values_.insert(values_.end(), p.data(), p.data() + 3); }
+  std::size_t size() const { return values_.size() / 3; }
+  Eigen::Map<Vec3d> operator[](std::size_t k) { return Eigen::Map<Vec3d>(values_.data() + 3 * k); }
+  Eigen::Map<const Vec3d> operator[](std::size_t k) const { return Eigen::Map<const Vec3d>(values_.data() + 3 * k); }
+  /// The three numbers of every point, in order.
+  std::span<const double> values() const { return values_; }
+  /// Moves the numbers out (no copy); no points are left.
+  std::vector<double> take() {
+    std::vector<double> taken = std::move(values_);
+    values_.clear();
+    return taken;
+  }
+
+ private:
+  std::vector<double> values_;
+};
+
 /// Where the model is linearised: positions, mines, biases.
 struct KalmanLinearisation {
-  std::vector<Vec3d> position;  // per step
+  FlatPoints position;          // per step
   std::vector<Vec3d> mine;      // per mine
   std::vector<char> mine_known; // placed at its first detection
   BiasVec bias = BiasVec::Zero();

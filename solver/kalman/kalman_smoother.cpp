@@ -81,10 +81,10 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     // variances of the first pass, independently of each reading's error)
     lin.position[0] = p;
     struct DeadReckoning final : MeasurementSink {
-      std::vector<Vec3d>& position;
+      FlatPoints& position;
       ArrowheadChain* kept_in;  // the chain that keeps the odometry, if it is fixed
       std::vector<Vec3d>& delta;
-      DeadReckoning(std::vector<Vec3d>& p, ArrowheadChain* chain, std::vector<Vec3d>& d)
+      DeadReckoning(FlatPoints& p, ArrowheadChain* chain, std::vector<Vec3d>& d)
           : position(p), kept_in(chain), delta(d) {}
       void odometry(std::size_t k, const Mat3d& information, const Vec3d& step, const BiasJacobian&) override {
         position[k + 1] = position[k] + step;
@@ -123,7 +123,7 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     if (fixed_odometry) {
       chain.reset_keeping_steps();
       add_priors(chain, builder, prior_sigma, lin);
-      chain.add_steps_again(odometry_delta, lin.position);
+      chain.add_steps_again(odometry_delta, lin.position.values());
     } else {
       chain.reset();
       add_priors(chain, builder, prior_sigma, lin);
@@ -205,12 +205,9 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
       // solve and the linearisation needed.
       chain.release_workspace();
       std::vector<Vec3d>().swap(odometry_delta);
-      result.mean.resize(3 * n);
-      for (std::size_t k = 0; k < n; ++k) {
-        const Vec3d p = lin.position[k] + builder.position_correction(chain, k);
-        for (int r = 0; r < 3; ++r) result.mean[3 * k + static_cast<std::size_t>(r)] = p[r];
-      }
-      std::vector<Vec3d>().swap(lin.position);
+      // The means, corrected in the linearisation point's own storage (no second array).
+      for (std::size_t k = 0; k < n; ++k) lin.position[k] += builder.position_correction(chain, k);
+      result.mean = lin.position.take();
       // The chain's own covariance blocks become the result's (symmetric: column-major is
       // row-major), converted in place with biases.
       result.covariance = chain.take_covariances();

@@ -158,8 +158,12 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
       chain.add_mixed(k, Eigen::RowVector3d(u(pass), u(pass), u(pass)), hm, u(pass), 3.0 + u(pass));
     }
   };
-  std::vector<Vec3> reference;  // the corrections' reference point (the smoother's linearisation point)
-  for (std::size_t k = 0; k < n; ++k) reference.push_back(Vec3(100 * u(rng), 100 * u(rng), 10 * u(rng)));
+  // The corrections' reference point (the smoother's linearisation point), three numbers a
+  // position as the smoother keeps it.
+  std::vector<double> reference;
+  for (std::size_t k = 0; k < n; ++k)
+    for (const double scale : {100.0, 100.0, 10.0}) reference.push_back(scale * u(rng));
+  const auto point = [&](std::size_t k) { return Vec3(reference[3 * k], reference[3 * k + 1], reference[3 * k + 2]); };
   ArrowheadChain kept(n, q);
   for (std::size_t k = 0; k + 1 < n; ++k) kept.add_step(k, w[k], delta[k]);
   for (const unsigned pass : {1u, 2u, 3u}) {
@@ -171,7 +175,7 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
     ArrowheadChain fresh(n, q);
     other_factors(fresh, pass);
     for (std::size_t k = 0; k + 1 < n; ++k)
-      fresh.add_step(k, w[k], ArrowheadChain::relative_step(delta[k], reference[k], reference[k + 1]));
+      fresh.add_step(k, w[k], ArrowheadChain::relative_step(delta[k], point(k), point(k + 1)));
     fresh.solve();
     for (std::size_t k = 0; k < n; ++k) ASSERT_EQ(kept.mean(k), fresh.mean(k)) << "pass " << pass << ", step " << k;
     kept.solve_covariances();
@@ -200,8 +204,8 @@ TEST(ArrowheadChain, RefusesCallsThatWouldSolveAnotherSystem) {
   for (std::size_t k = 0; k < 3; ++k) chain.add_step(k, w, delta[k]);
   chain.reset_keeping_steps();
   EXPECT_THROW(chain.add_step(0, w, delta[0]), std::logic_error);  // would make it 2W
-  const std::vector<Vec3> reference(4, Vec3::Zero());
-  EXPECT_THROW(chain.add_steps_again(delta, std::span<const Vec3>(reference).first(3)), std::invalid_argument);
+  const std::vector<double> reference(3 * 4, 0.0);
+  EXPECT_THROW(chain.add_steps_again(delta, std::span<const double>(reference).first(9)), std::invalid_argument);
   chain.add_steps_again(delta, reference);
   EXPECT_THROW(chain.add_steps_again(delta, reference), std::logic_error);  // twice
   chain.add_position(0, Mat3::Identity(), Vec3::Zero());
@@ -220,7 +224,7 @@ TEST(ArrowheadChain, RefusesCallsThatWouldSolveAnotherSystem) {
   EXPECT_EQ(none.static_mean().size(), 2);
   ArrowheadChain one(1, 0);
   one.reset_keeping_steps();
-  one.add_steps_again({}, std::vector<Vec3>{Vec3::Zero()});
+  one.add_steps_again({}, std::vector<double>{0.0, 0.0, 0.0});
   one.add_position(0, 2.0 * Mat3::Identity(), Vec3(1.0, 2.0, 3.0));
   one.solve();
   EXPECT_LT((one.mean(0) - Vec3(1.0, 2.0, 3.0)).norm(), 1e-12);

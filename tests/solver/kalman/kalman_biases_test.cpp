@@ -55,7 +55,7 @@ Fixture fixture() {
   o.duration = 900.0;
   Fixture f{simulate_mission(o), {}};
   const std::size_t n = f.mission.size(), k = static_cast<std::size_t>(f.mission.mine_count);
-  f.lin.position.resize(n);
+  f.lin.position.assign(n, Vec3d::Zero());
   for (std::size_t i = 0; i < n; ++i)
     f.lin.position[i] = Vec3d(f.mission.truth_x[i], f.mission.truth_y[i], f.mission.truth_z[i]);
   f.lin.mine.assign(k, Vec3d::Zero());

@@ -76,7 +76,7 @@ TEST(KalmanSmoother, TheOdometryKeptIsTheOdometryLinearisedAgain) {
   for (int pass = 0; pass < 2; ++pass) {  // (the second pass at the first one's estimate)
     kept.reset_keeping_steps();
     prior(kept, lin_kept);
-    kept.add_steps_again(keep.delta, lin_kept.position);
+    kept.add_steps_again(keep.delta, lin_kept.position.values());
     ChainBuilder kept_builder(kept, mines, false, lin_kept);
     linearise_measurements(m, m.model, t.fixes, {1.0, false, FactorSet::without_odometry}, lin_kept, kept_builder);
     kept.solve();
