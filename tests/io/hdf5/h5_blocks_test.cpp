@@ -29,6 +29,27 @@ std::string written_by_h5py(const std::string& name, const std::string& python) 
   return path;
 }
 
+// Three column vectors read_columns_into fills.
+struct ThreeColumns {
+  std::vector<double> a, b, c;
+  std::vector<double>* columns[3] = {&a, &b, &c};
+  ThreeColumns() = default;
+  ThreeColumns(const ThreeColumns&) = delete;
+  void read(const H5File& file, const std::string& dataset) {
+    file.read_columns_into(dataset, std::span<std::vector<double>* const>(columns, 3));
+  }
+  // The message of the FormatError reading `dataset` gives (a failure, and empty, if none).
+  std::string refusal(const H5File& file, const std::string& dataset) {
+    try {
+      read(file, dataset);
+    } catch (const FormatError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << dataset << " accepted";
+    return {};
+  }
+};
+
 // Value (r, c) of the datasets below: exact in doubles and in 64-bit integers.
 double expected(std::size_t r, std::size_t c) { return 4.0 * static_cast<double>(r) + static_cast<double>(c); }
 
@@ -56,13 +77,14 @@ TEST(H5Blocks, EveryRowIsReadAroundAndAcrossTheBlocks) {
     for (const char* kind : {"d", "i", "s"}) {
       const std::string dataset = kind + std::to_string(n);
       SCOPED_TRACE(dataset);
-      std::vector<double> a{7.0}, b, c(1000, 7.0);  // earlier contents and sizes are replaced
-      std::vector<double>* columns[3] = {&a, &b, &c};
-      file.read_columns_into(dataset, std::span<std::vector<double>* const>(columns, 3));
+      ThreeColumns read;
+      read.a = {7.0};  // earlier contents and sizes are replaced
+      read.c.assign(1000, 7.0);
+      read.read(file, dataset);
       std::size_t wrong = 0;
       for (std::size_t col = 0; col < 3; ++col) {
-        ASSERT_EQ(columns[col]->size(), n);
-        for (std::size_t r = 0; r < n; ++r) wrong += (*columns[col])[r] != expected(r, col) ? 1 : 0;
+        ASSERT_EQ(read.columns[col]->size(), n);
+        for (std::size_t r = 0; r < n; ++r) wrong += (*read.columns[col])[r] != expected(r, col) ? 1 : 0;
       }
       EXPECT_EQ(wrong, 0u);
     }
@@ -74,32 +96,20 @@ TEST(H5Blocks, AnIntegerTooLargeInALaterBlockIsNamedByItsIndex) {
                                                                   ", 3), dtype=np.int64)\n"
                                                                   "v[" + std::to_string(bad_row) + ", 1] = 2**60\n"
                                                                   "f['wide'] = v\n");
-  const H5File file = H5File::open_read(path);
-  std::vector<double> a, b, c;
-  std::vector<double>* columns[3] = {&a, &b, &c};
-  try {
-    file.read_columns_into("wide", std::span<std::vector<double>* const>(columns, 3));
-    ADD_FAILURE() << "accepted";
-  } catch (const FormatError& e) {
-    const std::string what = e.what();
-    EXPECT_EQ(what.rfind(path + ": ", 0), 0u) << what;
-    // Row bad_row, column 1 of a row-major N x 3 dataset: value 3 bad_row + 1.
-    const std::string named = "value " + std::to_string(3 * bad_row + 1) + " is an integer too large";
-    EXPECT_NE(what.find(named), std::string::npos) << what;
-  }
+  ThreeColumns read;
+  const std::string what = read.refusal(H5File::open_read(path), "wide");
+  EXPECT_EQ(what.rfind(path + ": ", 0), 0u) << what;
+  // Row bad_row, column 1 of a row-major N x 3 dataset: value 3 bad_row + 1.
+  const std::string named = "value " + std::to_string(3 * bad_row + 1) + " is an integer too large";
+  EXPECT_NE(what.find(named), std::string::npos) << what;
 }
 
 TEST(H5Blocks, AWrongColumnCountIsRefusedBeforeReading) {
   const H5File file = H5File::open_read(written_by_h5py("h5-columns-four", "f['four'] = np.zeros((20000, 4))\n"));
-  std::vector<double> a, b, c;
-  std::vector<double>* columns[3] = {&a, &b, &c};
-  try {
-    file.read_columns_into("four", std::span<std::vector<double>* const>(columns, 3));
-    ADD_FAILURE() << "accepted";
-  } catch (const FormatError& e) {
-    EXPECT_NE(std::string(e.what()).find("expected 3 columns, found 4"), std::string::npos) << e.what();
-  }
-  EXPECT_TRUE(a.empty());
+  ThreeColumns read;
+  const std::string what = read.refusal(file, "four");
+  EXPECT_NE(what.find("expected 3 columns, found 4"), std::string::npos) << what;
+  EXPECT_TRUE(read.a.empty());
 }
 
 TEST(H5Blocks, WrittenInBlocksAsWholeWithTheSameDigest) {

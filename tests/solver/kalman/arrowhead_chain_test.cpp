@@ -63,6 +63,13 @@ struct Both {
     lambda += w * h.transpose() * h;
     eta += w * z * h.transpose();
   }
+  // Random steps of information about `step_scale` between all positions, and a random
+  // prior of information about 0.5 on every `prior_every`-th position.
+  void random_chain(std::mt19937_64& rng, double step_scale, std::size_t prior_every) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (std::size_t k = 0; k + 1 < n; ++k) step(k, random_spd(rng, step_scale), Vec3(u(rng), u(rng), u(rng)));
+    for (std::size_t k = 0; k < n; k += prior_every) position(k, random_spd(rng, 0.5), Vec3(u(rng), u(rng), u(rng)));
+  }
   // A mixed row of random coefficients and value, of information weight + u (u in [-1, 1]).
   void random_mixed(std::mt19937_64& rng, std::size_t k, double weight) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -103,11 +110,9 @@ TEST(ArrowheadChain, MatchesADenseLeastSquaresSolve) {
 // the covariance pass, and once per solve.
 TEST(ArrowheadChain, HandsOverItsCovariancesSymmetricAndOnce) {
   std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   const std::size_t n = 40, q = 3;
   Both b(n, q);
-  for (std::size_t k = 0; k + 1 < n; ++k) b.step(k, random_spd(rng, 20.0), Vec3(u(rng), u(rng), u(rng)));
-  for (std::size_t k = 0; k < n; k += 9) b.position(k, random_spd(rng, 0.5), Vec3(u(rng), u(rng), u(rng)));
+  b.random_chain(rng, 20.0, 9);
   for (const std::size_t k : {std::size_t{5}, std::size_t{21}, std::size_t{39}})
     for (int r = 0; r < 3; ++r) b.random_mixed(rng, k, 3.0);
   b.chain.solve_means();
@@ -240,8 +245,7 @@ TEST(ArrowheadChain, CrossCovariancesMatchTheDenseInverse) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const std::size_t n = 50, q = 7;
   Both b(n, q);
-  for (std::size_t k = 0; k + 1 < n; ++k) b.step(k, random_spd(rng, 20.0), Vec3(u(rng), u(rng), u(rng)));
-  for (std::size_t k = 0; k < n; k += 9) b.position(k, random_spd(rng, 0.5), Vec3(u(rng), u(rng), u(rng)));
+  b.random_chain(rng, 20.0, 9);
   const auto mixed_row = [&](std::size_t k) { b.random_mixed(rng, k, 2.0); };
   mixed_row(0);
   for (std::size_t k = 20; k < 30; ++k) mixed_row(k);
