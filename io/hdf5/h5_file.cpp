@@ -78,32 +78,41 @@ void H5File::close() {
 
 H5Kind H5File::kind(const std::string& object) const {
   if (object.empty() || object == "/") return H5Kind::group;
+  const H5Handle o = open_plain_object(object);
+  if (!o.valid()) return H5Kind::missing;
+  return H5Iget_type(o.get()) == H5I_GROUP ? H5Kind::group : H5Kind::dataset;
+}
+
+H5Handle H5File::open_plain_object(const std::string& object) const {
   // Walk the path one level at a time: H5Lexists fails when an intermediate level
   // is missing or is not a group, and only hard links name plain objects (a soft
-  // or external link could point anywhere, another file included).
+  // or external link could point anywhere, another file included). A level found to
+  // be a group is not walked again: a mission's reader opens about 30 objects under
+  // a few groups, and each walk opened every level's object header.
   std::size_t end = 0;
   while (end != std::string::npos) {
     end = object.find('/', end + 1);
+    const bool last = end == std::string::npos || end + 1 == object.size();
     const std::string level = object.substr(0, end);
+    if (!last && std::find(groups_.begin(), groups_.end(), level) != groups_.end()) continue;
     const htri_t exists = H5Lexists(file_.get(), level.c_str(), H5P_DEFAULT);
     if (exists < 0) fail(level, "cannot be read (damaged file?)");
-    if (exists == 0) return H5Kind::missing;
+    if (exists == 0) return H5Handle();
     H5L_info_t link{};
     if (H5Lget_info(file_.get(), level.c_str(), &link, H5P_DEFAULT) < 0) fail(level, "cannot be read (damaged file?)");
     if (link.type != H5L_TYPE_HARD) fail(level, "is a soft or external link; gesmi reads only plain groups and datasets");
-    const H5Handle o(H5Oopen(file_.get(), level.c_str(), H5P_DEFAULT), H5Oclose);
+    H5Handle o(H5Oopen(file_.get(), level.c_str(), H5P_DEFAULT), H5Oclose);
     if (!o.valid()) fail(level, "cannot be opened (damaged file?)");
     const H5I_type_t type = H5Iget_type(o.get());
-    const bool last = end == std::string::npos || end + 1 == object.size();
+    if (type == H5I_GROUP) groups_.push_back(level);
     if (!last) {
       if (type != H5I_GROUP) fail(level, "expected a group, found a dataset");
       continue;
     }
-    if (type == H5I_GROUP) return H5Kind::group;
-    if (type == H5I_DATASET) return H5Kind::dataset;
-    fail(level, "expected a group or a dataset, found a named datatype");
+    if (type != H5I_GROUP && type != H5I_DATASET) fail(level, "expected a group or a dataset, found a named datatype");
+    return o;
   }
-  return H5Kind::missing;
+  return H5Handle();
 }
 
 bool H5File::has_group(const std::string& group) const {
@@ -113,17 +122,18 @@ bool H5File::has_group(const std::string& group) const {
 }
 
 H5Handle H5File::open_dataset(const std::string& dataset) const {
-  const H5Kind k = kind(dataset);
-  if (k == H5Kind::missing) fail(dataset, "missing dataset");
-  if (k == H5Kind::group) fail(dataset, "expected a dataset, found a group");
-  const hid_t id = H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT);
-  if (id < 0) fail(dataset, "cannot be opened (damaged file?)");
-  return H5Handle(id, H5Dclose);
+  // The object opened by the walk is the dataset's handle (H5Oopen returns a dataset
+  // identifier for a dataset): not opened a second time.
+  H5Handle d = open_plain_object(dataset);
+  if (!d.valid()) fail(dataset, "missing dataset");
+  if (H5Iget_type(d.get()) != H5I_DATASET) fail(dataset, "expected a dataset, found a group");
+  return d;
 }
 
-H5Shape H5File::shape(const std::string& dataset) const {
-  const H5Handle d = open_dataset(dataset);
-  const H5Handle space(H5Dget_space(d.get()), H5Sclose);
+H5Shape H5File::shape(const std::string& dataset) const { return shape_of(open_dataset(dataset).get(), dataset); }
+
+H5Shape H5File::shape_of(std::int64_t d, const std::string& dataset) const {
+  const H5Handle space(H5Dget_space(d), H5Sclose);
   if (!space.valid()) fail(dataset, "cannot read its shape");
   const int rank = H5Sget_simple_extent_ndims(space.get());
   if (rank < 1 || rank > 2) fail(dataset, "expected 1 or 2 dimensions, found " + std::to_string(rank));

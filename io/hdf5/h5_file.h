@@ -134,11 +134,14 @@ class H5File {
   H5File(H5Handle file, std::string path) : file_(std::move(file)), path_(std::move(path)) {}
   [[noreturn]] void fail(const std::string& object, const std::string& reason) const;
   void ensure_parent_groups(const std::string& dataset);
+  /// The object at a path of hard-linked groups, opened (a group or a dataset), or an
+  /// invalid handle when a level is missing; FormatError as kind() describes.
+  H5Handle open_plain_object(const std::string& object) const;
   H5Handle open_dataset(const std::string& dataset) const;
+  H5Shape shape_of(std::int64_t dataset, const std::string& name) const;
   H5Handle open_attribute(const std::string& object, const std::string& name) const;
   /// The shape, once class and stored size are known to be readable (integers or numbers).
-  H5Shape checked_shape(const std::string& dataset, bool integers, int rank = 0) const;
-  void read_checked(const std::string& dataset, std::span<double> out) const;
+  H5Shape checked_shape(std::int64_t dataset, const std::string& name, bool integers, int rank = 0) const;
   /// Rows [first, first + rows) of a dataset of `columns` columns.
   struct RowBlock {
     std::size_t first, rows, columns;
@@ -148,6 +151,7 @@ class H5File {
   void read_rows(std::int64_t dataset, const std::string& name, RowBlock block, std::span<double> out) const;
   H5Handle file_;
   std::string path_;
+  mutable std::vector<std::string> groups_;  // levels already found to be hard-linked groups
 };
 
 }  // namespace gesmi::io

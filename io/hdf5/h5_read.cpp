@@ -77,27 +77,17 @@ std::string storage_problem(hid_t dataset, std::size_t values, std::size_t type_
 
 }  // namespace
 
-H5Shape H5File::checked_shape(const std::string& dataset, bool integers, int rank) const {
-  const H5Shape s = shape(dataset);
+H5Shape H5File::checked_shape(std::int64_t d, const std::string& dataset, bool integers, int rank) const {
+  const H5Shape s = shape_of(d, dataset);
   if (rank != 0 && s.rank != rank)
     fail(dataset, "expected " + std::to_string(rank) + " dimension" + (rank == 1 ? "" : "s") + ", found " + std::to_string(s.rank));
-  const H5Handle d = open_dataset(dataset);
-  const H5Handle type(H5Dget_type(d.get()), H5Tclose);
+  const H5Handle type(H5Dget_type(d), H5Tclose);
   if (!type.valid()) fail(dataset, "cannot read its type (damaged file?)");
   const std::string why_type = integers ? integer_type_problem(type.get()) : double_type_problem(type.get());
   if (!why_type.empty()) fail(dataset, why_type);
-  const std::string why_storage = storage_problem(d.get(), s.rows * s.columns, H5Tget_size(type.get()));
+  const std::string why_storage = storage_problem(d, s.rows * s.columns, H5Tget_size(type.get()));
   if (!why_storage.empty()) fail(dataset, why_storage);
   return s;
-}
-
-void H5File::read_checked(const std::string& dataset, std::span<double> out) const {
-  const H5Shape s = checked_shape(dataset, false);
-  if (s.rows * s.columns != out.size())
-    fail(dataset, "expected " + std::to_string(out.size()) + " values, found " + std::to_string(s.rows * s.columns));
-  if (out.empty()) return;
-  const H5Handle d = open_dataset(dataset);
-  read_rows(d.get(), dataset, {0, s.rows, s.columns}, out);
 }
 
 void H5File::read_rows(std::int64_t d, const std::string& dataset, RowBlock block, std::span<double> out) const {
@@ -142,11 +132,16 @@ void H5File::read_rows(std::int64_t d, const std::string& dataset, RowBlock bloc
 }
 
 void H5File::read_doubles_into(const std::string& dataset, std::span<double> out) const {
-  read_checked(dataset, out);
+  const H5Handle d = open_dataset(dataset);
+  const H5Shape s = checked_shape(d.get(), dataset, false);
+  if (s.rows * s.columns != out.size())
+    fail(dataset, "expected " + std::to_string(out.size()) + " values, found " + std::to_string(s.rows * s.columns));
+  if (!out.empty()) read_rows(d.get(), dataset, {0, s.rows, s.columns}, out);
 }
 
 void H5File::read_columns_into(const std::string& dataset, std::span<std::vector<double>* const> columns) const {
-  const H5Shape s = checked_shape(dataset, false, 2);  // before allocating
+  const H5Handle d = open_dataset(dataset);
+  const H5Shape s = checked_shape(d.get(), dataset, false, 2);  // before allocating
   const std::size_t width = columns.size();
   if (s.columns != width) fail(dataset, "expected " + std::to_string(width) + " columns, found " + std::to_string(s.columns));
   for (std::vector<double>* out : columns) out->resize(s.rows);
@@ -156,7 +151,6 @@ void H5File::read_columns_into(const std::string& dataset, std::span<std::vector
   // one more array to fault in and zero (240 MB a dataset at 10^7 steps).
   const std::size_t block_rows = std::min(s.rows, kBlockRows);
   std::vector<double> rows(block_rows * width);
-  const H5Handle d = open_dataset(dataset);
   for (std::size_t first = 0; first < s.rows; first += block_rows) {
     const std::size_t count = std::min(block_rows, s.rows - first);
     read_rows(d.get(), dataset, {first, count, width}, std::span<double>(rows.data(), count * width));
@@ -168,15 +162,16 @@ void H5File::read_columns_into(const std::string& dataset, std::span<std::vector
 }
 
 std::vector<double> H5File::read_doubles(const std::string& dataset, int rank) const {
-  const H5Shape s = checked_shape(dataset, false, rank);  // before allocating
+  const H5Handle d = open_dataset(dataset);
+  const H5Shape s = checked_shape(d.get(), dataset, false, rank);  // before allocating
   std::vector<double> values(s.rows * s.columns);
-  read_checked(dataset, values);
+  if (!values.empty()) read_rows(d.get(), dataset, {0, s.rows, s.columns}, values);
   return values;
 }
 
 std::vector<std::int32_t> H5File::read_ints(const std::string& dataset, int rank) const {
-  const H5Shape s = checked_shape(dataset, true, rank);  // before allocating
   const H5Handle d = open_dataset(dataset);
+  const H5Shape s = checked_shape(d.get(), dataset, true, rank);  // before allocating
   const std::size_t count = s.rows * s.columns;
   const H5Handle type(H5Dget_type(d.get()), H5Tclose);
   if (!type.valid()) fail(dataset, "cannot read its type (damaged file?)");
