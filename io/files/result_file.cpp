@@ -126,26 +126,44 @@ void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interv
 }
 
 // Reads N x 3 bounds; an interval is [lo, hi] with lo <= hi, lo < +inf, hi > -inf,
-// or empty (both NaN).
+// or empty (both NaN). The lower and upper datasets are read in step, in blocks: no
+// whole copy of either (240 MB at 10^7 steps). A changed digest is reported before a bad
+// row (the row may be the edit): the first bad row is kept until both are checked.
 void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interval>* axes[3], std::size_t n,
                  std::optional<DigestKind> verified) {
-  std::vector<double> lower(3 * n), upper(3 * n);
-  f.read_doubles_into(prefix + "/lower", lower);
-  f.read_doubles_into(prefix + "/upper", upper);
+  H5File::RowBlocks lower(f, prefix + "/lower", 3), upper(f, prefix + "/upper", 3);
+  for (const H5File::RowBlocks* bounds : {&lower, &upper})
+    if (bounds->rows() != n)
+      bad(f, prefix + (bounds == &lower ? "/lower" : "/upper"),
+          "expected " + std::to_string(n) + " rows, found " + std::to_string(bounds->rows()));
+  std::optional<DatasetDigest> lower_digest, upper_digest;
   if (verified) {
-    verify_digest(f, prefix + "/lower", lower, n, 3, *verified);
-    verify_digest(f, prefix + "/upper", upper, n, 3, *verified);
+    lower_digest.emplace(prefix + "/lower", n, 3, *verified);
+    upper_digest.emplace(prefix + "/upper", n, 3, *verified);
   }
   for (std::size_t c = 0; c < 3; ++c) axes[c]->resize(n);
-  for (std::size_t k = 0; k < n; ++k)
-    for (std::size_t c = 0; c < 3; ++c) {
-      const double lo = lower[3 * k + c], hi = upper[3 * k + c];
-      const bool empty = std::isnan(lo) && std::isnan(hi);
-      if (!empty && !(lo <= hi && lo < INFINITY && hi > -INFINITY))
-        bad(f, prefix, "row " + std::to_string(k) + ": not an interval (lower " + format_number(lo) + ", upper " +
-                           format_number(hi) + ")");
-      (*axes[c])[k] = empty ? Interval::empty() : Interval(lo, hi);
+  std::string first_bad_row;
+  for (std::span<const double> lo_rows = lower.next(), hi_rows = upper.next(); !lo_rows.empty();
+       lo_rows = lower.next(), hi_rows = upper.next()) {
+    if (verified) {
+      lower_digest->add(lo_rows);
+      upper_digest->add(hi_rows);
     }
+    for (std::size_t i = 0; i < lo_rows.size(); ++i) {
+      const double lo = lo_rows[i], hi = hi_rows[i];
+      const bool empty = std::isnan(lo) && std::isnan(hi);
+      const std::size_t k = lower.first() + i / 3;
+      if (!empty && !(lo <= hi && lo < INFINITY && hi > -INFINITY) && first_bad_row.empty())
+        first_bad_row = "row " + std::to_string(k) + ": not an interval (lower " + format_number(lo) + ", upper " +
+                        format_number(hi) + ")";
+      (*axes[i % 3])[k] = empty ? Interval::empty() : Interval(lo, hi);
+    }
+  }
+  if (verified) {
+    lower_digest->verify(f);
+    upper_digest->verify(f);
+  }
+  if (!first_bad_row.empty()) bad(f, prefix, first_bad_row);
 }
 
 void expect_flags(const H5File& f, const std::string& dataset, const std::vector<std::int32_t>& values) {

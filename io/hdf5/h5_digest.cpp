@@ -4,24 +4,32 @@
 #include "io/format_error.h"
 
 namespace gesmi::io {
-namespace {
-
-template <class T>
-std::string digest(const std::string& dataset, std::span<const T> values, std::size_t rows, std::size_t columns,
-                   DigestKind kind) {
-  Digest h(kind);
-  h.add(std::string_view(dataset));
-  h.add_count(rows);
-  h.add_count(columns);
-  h.add(values);
-  return h.hex();
+DatasetDigest::DatasetDigest(std::string dataset, std::size_t rows, std::size_t columns, DigestKind kind)
+    : dataset_(std::move(dataset)), kind_(kind), digest_(kind) {
+  digest_.add(std::string_view(dataset_));
+  digest_.add_count(rows);
+  digest_.add_count(columns);
+  digest_.add_count(rows * columns);  // (Digest::add of the values: their count first)
 }
+
+std::string DatasetDigest::verify(const H5File& f) {
+  const std::optional<std::string> stored = f.string_attribute(dataset_, digest_name(kind_));
+  if (!stored)
+    throw FormatError(f.path() + ": " + dataset_ + ": has no " + digest_name(kind_) + " attribute (not written by this gesmi)");
+  const std::string hex = digest_.hex();
+  if (*stored != hex) throw FormatError(f.path() + ": " + dataset_ + ": contents " + differ_from_recorded(kind_));
+  return hex;
+}
+
+namespace {
 
 template <class T>
 std::string write_with_digest(H5File& f, const std::string& dataset, std::span<const T> values, std::size_t rows,
                               std::size_t columns, int rank, DigestKind kind) {
   f.write(dataset, values, rows, columns, rank);
-  const std::string hex = digest(dataset, values, rows, columns, kind);
+  DatasetDigest h(dataset, rows, columns, kind);
+  h.add(values);
+  const std::string hex = h.hex();
   f.set_attribute(dataset, digest_name(kind), hex);
   return hex;
 }
@@ -29,13 +37,9 @@ std::string write_with_digest(H5File& f, const std::string& dataset, std::span<c
 template <class T>
 std::string verify(const H5File& f, const std::string& dataset, std::span<const T> values, std::size_t rows,
                    std::size_t columns, DigestKind kind) {
-  const std::optional<std::string> stored = f.string_attribute(dataset, digest_name(kind));
-  if (!stored)
-    throw FormatError(f.path() + ": " + dataset + ": has no " + digest_name(kind) + " attribute (not written by this gesmi)");
-  const std::string hex = digest(dataset, values, rows, columns, kind);
-  if (*stored != hex)
-    throw FormatError(f.path() + ": " + dataset + ": contents " + differ_from_recorded(kind));
-  return hex;
+  DatasetDigest h(dataset, rows, columns, kind);
+  h.add(values);
+  return h.verify(f);
 }
 
 }  // namespace
@@ -50,15 +54,10 @@ std::string write_digested(H5File& f, const std::string& dataset, std::span<cons
 }
 std::string write_digested_in_blocks(H5File& f, const std::string& dataset, std::size_t rows, std::size_t columns,
                                      int rank, DigestKind kind, const H5File::RowFiller& fill) {
-  // The digest of digest() above, its values added block by block.
-  Digest h(kind);
-  h.add(std::string_view(dataset));
-  h.add_count(rows);
-  h.add_count(columns);
-  h.add_count(rows * columns);
+  DatasetDigest h(dataset, rows, columns, kind);
   f.write_in_blocks(dataset, rows, columns, rank, [&](std::size_t first, std::size_t count, std::span<double> out) {
     fill(first, count, out);
-    h.add_bytes(out.data(), out.size_bytes());
+    h.add(std::span<const double>(out));
   });
   const std::string hex = h.hex();
   f.set_attribute(dataset, digest_name(kind), hex);

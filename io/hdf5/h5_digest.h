@@ -17,6 +17,27 @@
 
 namespace gesmi::io {
 
+/// The digest of a dataset's name, shape and values, the values added in blocks (of a
+/// writer or of a reader, H5File::RowBlocks): the same as of all of them at once.
+class DatasetDigest {
+ public:
+  DatasetDigest(std::string dataset, std::size_t rows, std::size_t columns, DigestKind kind);
+  template <class T>
+  void add(std::span<const T> values) {
+    digest_.add_bytes(values.data(), values.size_bytes());
+  }
+  /// Finishes the digest; hex digits.
+  std::string hex() { return digest_.hex(); }
+  /// Finishes the digest and compares it with the dataset's digest attribute in `file`:
+  /// FormatError naming the file and dataset when it is missing or differs. Returns it.
+  std::string verify(const H5File& file);
+
+ private:
+  std::string dataset_;
+  DigestKind kind_;
+  Digest digest_;
+};
+
 /// Writes a dataset (as H5File::write) and its digest attribute; returns the digest.
 std::string write_digested(H5File& file, const std::string& dataset, std::span<const double> values, std::size_t rows,
                            DigestKind kind, std::size_t columns = 1, int rank = 1);

@@ -92,6 +92,28 @@ class H5File {
   /// On a FormatError from a later block the columns are left sized and partly filled.
   void read_columns_into(const std::string& dataset, std::span<std::vector<double>* const> columns) const;
 
+  /// A dataset of doubles read in blocks of at most kBlockRows rows through one small
+  /// buffer, so that several datasets can be read in step (the lower and upper bounds of
+  /// a result) without a copy of each whole. Opening checks what read_doubles checks
+  /// (rank: the number of dimensions the format gives it, 0: 1 or 2) and the number of
+  /// columns.
+  class RowBlocks {
+   public:
+    RowBlocks(const H5File& file, const std::string& dataset, std::size_t columns, int rank = 0);
+    std::size_t rows() const { return rows_; }
+    /// The next block's rows, row-major; empty after the last.
+    std::span<const double> next();
+    /// The index of the first row of the block next() returned last.
+    std::size_t first() const { return first_; }
+
+   private:
+    const H5File& file_;
+    std::string dataset_;
+    H5Handle handle_;
+    std::size_t rows_ = 0, columns_, first_ = 0, end_ = 0;
+    std::vector<double> buffer_;
+  };
+
   /// Creates a group (and its parents) if missing.
   void create_group(const std::string& group) { ensure_parent_groups(group + "/"); }
   /// Writes a dataset (creating parent groups): rows x columns, row-major.

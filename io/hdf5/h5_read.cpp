@@ -139,26 +139,36 @@ void H5File::read_doubles_into(const std::string& dataset, std::span<double> out
   if (!out.empty()) read_rows(d.get(), dataset, {0, s.rows, s.columns}, out);
 }
 
+H5File::RowBlocks::RowBlocks(const H5File& file, const std::string& dataset, std::size_t columns, int rank)
+    : file_(file), dataset_(dataset), handle_(file.open_dataset(dataset)), columns_(columns) {
+  const H5Shape s = file.checked_shape(handle_.get(), dataset, false, rank);  // before allocating
+  if (s.columns != columns)
+    file.fail(dataset, "expected " + std::to_string(columns) + " columns, found " + std::to_string(s.columns));
+  rows_ = s.rows;
+  buffer_.resize(std::min(rows_, kBlockRows) * columns);
+}
+
+std::span<const double> H5File::RowBlocks::next() {
+  first_ = end_;
+  if (first_ >= rows_) return {};
+  end_ = std::min(rows_, first_ + kBlockRows);
+  const std::span<double> values(buffer_.data(), (end_ - first_) * columns_);
+  file_.read_rows(handle_.get(), dataset_, {first_, end_ - first_, columns_}, values);
+  return values;
+}
+
 void H5File::read_columns_into(const std::string& dataset, std::span<std::vector<double>* const> columns) const {
-  const H5Handle d = open_dataset(dataset);
-  const H5Shape s = checked_shape(d.get(), dataset, false, 2);  // before allocating
-  const std::size_t width = columns.size();
-  if (s.columns != width) fail(dataset, "expected " + std::to_string(width) + " columns, found " + std::to_string(s.columns));
-  for (std::vector<double>* out : columns) out->resize(s.rows);
-  if (s.rows == 0) return;
   // Contiguous reads of blocks of rows through one small buffer: a strided read per
   // column costs more than the copy, and a row-major copy of the whole dataset would be
   // one more array to fault in and zero (240 MB a dataset at 10^7 steps).
-  const std::size_t block_rows = std::min(s.rows, kBlockRows);
-  std::vector<double> rows(block_rows * width);
-  for (std::size_t first = 0; first < s.rows; first += block_rows) {
-    const std::size_t count = std::min(block_rows, s.rows - first);
-    read_rows(d.get(), dataset, {first, count, width}, std::span<double>(rows.data(), count * width));
+  const std::size_t width = columns.size();
+  RowBlocks blocks(*this, dataset, width, 2);
+  for (std::vector<double>* out : columns) out->resize(blocks.rows());
+  for (std::span<const double> block = blocks.next(); !block.empty(); block = blocks.next())
     for (std::size_t c = 0; c < width; ++c) {
-      double* out = columns[c]->data() + first;
-      for (std::size_t r = 0; r < count; ++r) out[r] = rows[r * width + c];
+      double* out = columns[c]->data() + blocks.first();
+      for (std::size_t r = 0; r < block.size() / width; ++r) out[r] = block[r * width + c];
     }
-  }
 }
 
 std::vector<double> H5File::read_doubles(const std::string& dataset, int rank) const {

@@ -90,6 +90,49 @@ TEST(H5Blocks, EveryRowIsReadAroundAndAcrossTheBlocks) {
     }
 }
 
+TEST(H5Blocks, TwoDatasetsAreReadInStepBlockByBlock) {
+  // RowBlocks as a result's lower and upper bounds are read: in step, every row once,
+  // each block's first row reported, and the digest of the blocks that of the whole.
+  const std::string python = "for n in " + python_list(row_counts()) + ":\n"
+                             "    v = 4.0 * np.arange(n)[:, None] + np.arange(3)[None, :]\n"
+                             "    f[f'lo{n}'] = v\n"
+                             "    f[f'hi{n}'] = -v\n";
+  const H5File file = H5File::open_read(written_by_h5py("h5-row-blocks", python));
+  for (const std::size_t n : row_counts()) {
+    SCOPED_TRACE(n);
+    H5File::RowBlocks lower(file, "lo" + std::to_string(n), 3), upper(file, "hi" + std::to_string(n), 3);
+    ASSERT_EQ(lower.rows(), n);
+    DatasetDigest blockwise("/v", n, 3, DigestKind::xxh128), whole("/v", n, 3, DigestKind::xxh128);
+    std::vector<double> all;
+    std::size_t rows_seen = 0, wrong = 0;
+    for (std::span<const double> lo = lower.next(), hi = upper.next(); !lo.empty(); lo = lower.next(), hi = upper.next()) {
+      ASSERT_EQ(lower.first(), rows_seen);
+      ASSERT_EQ(upper.first(), rows_seen);
+      ASSERT_EQ(hi.size(), lo.size());
+      ASSERT_LE(lo.size(), 3 * H5File::kBlockRows);
+      blockwise.add(lo);
+      for (std::size_t i = 0; i < lo.size(); ++i) {
+        const double want = expected(rows_seen + i / 3, i % 3);
+        wrong += lo[i] != want || hi[i] != -want ? 1 : 0;
+        all.push_back(lo[i]);
+      }
+      rows_seen += lo.size() / 3;
+    }
+    EXPECT_EQ(rows_seen, n);
+    EXPECT_EQ(wrong, 0u);
+    whole.add(std::span<const double>(all));
+    EXPECT_EQ(blockwise.hex(), whole.hex());
+  }
+  // A wrong number of columns: refused on opening, before any block.
+  const H5File four_columns = H5File::open_read(written_by_h5py("h5-row-blocks-four", "f['four'] = np.zeros((10, 4))\n"));
+  try {
+    const H5File::RowBlocks four(four_columns, "four", 3);
+    ADD_FAILURE() << "four columns accepted";
+  } catch (const FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("four: expected 3 columns, found 4"), std::string::npos) << e.what();
+  }
+}
+
 TEST(H5Blocks, AnIntegerTooLargeInALaterBlockIsNamedByItsIndex) {
   const std::size_t rows = 3 * H5File::kBlockRows + 5, bad_row = H5File::kBlockRows + 10;
   const std::string path = written_by_h5py("h5-columns-wide", "v = np.zeros((" + std::to_string(rows) +

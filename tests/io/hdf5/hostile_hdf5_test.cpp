@@ -168,6 +168,37 @@ TEST(HostileHdf5, EditedResultsAreRefusedNamingWhatDiffers) {
   for (const Case& c : cases) expect_refused(samples().result, c, [](const std::string& p) { return read_result(p); });
 }
 
+TEST(HostileHdf5, ABadRowInALaterBlockIsNamedOnceTheDigestsAreChecked) {
+  // The tube and increments are read in blocks of H5File::kBlockRows rows, lower and
+  // upper in step: a bad row in the third block is named by its row in the whole
+  // dataset, and only once the digests are checked (the bad row may be the edit).
+  const std::string folder = test::temp_folder("hostile-blocks");
+  const std::string mission = folder + "/m.h5", result = folder + "/r.h5";
+  ASSERT_EQ(test::run_gesmi({"simulate", "--seed", "3", "--duration", "1800", "-o", mission}).exit_code, 0);
+  ASSERT_EQ(test::run_gesmi({"solve", mission, "-o", result}).exit_code, 0);
+  ASSERT_GT(read_result(result).solution.time.size(), 2 * H5File::kBlockRows + 124);
+  const std::string row = std::to_string(2 * H5File::kBlockRows + 123);
+  // The dataset's digest recomputed the way gesmi computes it (Python's xxhash).
+  const auto redigest = [](const char* dataset) {
+    return std::string("import xxhash, struct\nname = b'") + dataset + "'\nv = f['" + dataset + "'][:]\n"
+           "f['" + dataset + "'].attrs['xxh128'] = xxhash.xxh3_128_hexdigest(struct.pack('<Q', len(name)) + name + "
+           "struct.pack('<QQQ', v.shape[0], 3, v.size) + v.astype('<f8').tobytes())\n";
+  };
+  const std::string cross = "lo = f['/tube/lower'][:]\nlo[" + row + ", 1] = 1e9\nf['/tube/lower'][:] = lo\n";
+  const std::string cross_increment = "hi = f['/increments/upper'][:]\nhi[" + row + ", 2] = -1e9\nf['/increments/upper'][:] = hi\n";
+  const std::string cross_redigested = cross + redigest("/tube/lower"),
+                    cross_increment_redigested = cross_increment + redigest("/increments/upper");
+  const std::string named_tube = "/tube: row " + row + ": not an interval (lower 1e+09",
+                    named_increment = "/increments: row " + row + ": not an interval";
+  const Case cases[] = {
+      {cross.c_str(), "/tube/lower: contents differ from the XXH3-128 digest"},
+      {cross_redigested.c_str(), named_tube.c_str()},
+      {cross_increment.c_str(), "/increments/upper: contents differ"},
+      {cross_increment_redigested.c_str(), named_increment.c_str()},
+  };
+  for (const Case& c : cases) expect_refused(result, c, [](const std::string& p) { return read_result(p); });
+}
+
 TEST(HostileHdf5, PartialReadsCheckWhatTheyReadAndTheRootDigest) {
   // `gesmi waterfall` and `candidates` read no tube: an edited waterfall, mark table or
   // root attribute is still refused; an edited tube is not read, hence not used.
