@@ -145,12 +145,14 @@ H5File::RowBlocks::RowBlocks(const H5File& file, const std::string& dataset, std
   if (s.columns != columns)
     file.fail(dataset, "expected " + std::to_string(columns) + " columns, found " + std::to_string(s.columns));
   rows_ = s.rows;
-  buffer_.resize(std::min(rows_, kBlockRows) * columns);
 }
 
 std::span<const double> H5File::RowBlocks::next() {
   first_ = end_;
   if (first_ >= rows_) return {};
+  // At the first block, after the caller's own arrays: allocated before them, the buffer
+  // moved them up the heap, and `marks add` touched one more 2 MiB page (18 -> 20 MB).
+  if (buffer_.empty()) buffer_.resize(std::min(rows_, kBlockRows) * columns_);
   end_ = std::min(rows_, first_ + kBlockRows);
   const std::span<double> values(buffer_.data(), (end_ - first_) * columns_);
   file_.read_rows(handle_.get(), dataset_, {first_, end_ - first_, columns_}, values);
