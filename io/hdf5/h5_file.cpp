@@ -78,6 +78,7 @@ void H5File::close() {
 
 H5Kind H5File::kind(const std::string& object) const {
   if (object.empty() || object == "/") return H5Kind::group;
+  if (std::find(groups_.begin(), groups_.end(), object) != groups_.end()) return H5Kind::group;  // (an attribute's object)
   const H5Handle o = open_plain_object(object);
   if (!o.valid()) return H5Kind::missing;
   return H5Iget_type(o.get()) == H5I_GROUP ? H5Kind::group : H5Kind::dataset;
@@ -104,7 +105,7 @@ H5Handle H5File::open_plain_object(const std::string& object) const {
     H5Handle o(H5Oopen(file_.get(), level.c_str(), H5P_DEFAULT), H5Oclose);
     if (!o.valid()) fail(level, "cannot be opened (damaged file?)");
     const H5I_type_t type = H5Iget_type(o.get());
-    if (type == H5I_GROUP) groups_.push_back(level);
+    if (type == H5I_GROUP && std::find(groups_.begin(), groups_.end(), level) == groups_.end()) groups_.push_back(level);
     if (!last) {
       if (type != H5I_GROUP) fail(level, "expected a group, found a dataset");
       continue;
@@ -124,6 +125,7 @@ bool H5File::has_group(const std::string& group) const {
 H5Handle H5File::open_dataset(const std::string& dataset) const {
   // The object opened by the walk is the dataset's handle (H5Oopen returns a dataset
   // identifier for a dataset): not opened a second time.
+  if (dataset.empty() || dataset == "/") fail(dataset, "expected a dataset, found a group");
   H5Handle d = open_plain_object(dataset);
   if (!d.valid()) fail(dataset, "missing dataset");
   if (H5Iget_type(d.get()) != H5I_DATASET) fail(dataset, "expected a dataset, found a group");

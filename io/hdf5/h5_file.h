@@ -100,6 +100,7 @@ class H5File {
   class RowBlocks {
    public:
     RowBlocks(const H5File& file, const std::string& dataset, std::size_t columns, int rank = 0);
+    RowBlocks(H5File&&, const std::string&, std::size_t, int = 0) = delete;  // (it reads the file as it goes)
     std::size_t rows() const { return rows_; }
     /// The next block's rows, row-major; empty after the last.
     std::span<const double> next();
