@@ -12,6 +12,12 @@ DatasetDigest::DatasetDigest(std::string dataset, std::size_t rows, std::size_t 
   digest_.add_count(rows * columns);  // (Digest::add of the values: their count first)
 }
 
+std::string DatasetDigest::record(H5File& f) {
+  const std::string hex = digest_.hex();
+  f.set_attribute(dataset_, digest_name(kind_), hex);
+  return hex;
+}
+
 std::string DatasetDigest::verify(const H5File& f) {
   const std::optional<std::string> stored = f.string_attribute(dataset_, digest_name(kind_));
   if (!stored)
@@ -29,9 +35,7 @@ std::string write_with_digest(H5File& f, const std::string& dataset, std::span<c
   f.write(dataset, values, rows, columns, rank);
   DatasetDigest h(dataset, rows, columns, kind);
   h.add(values);
-  const std::string hex = h.hex();
-  f.set_attribute(dataset, digest_name(kind), hex);
-  return hex;
+  return h.record(f);
 }
 
 template <class T>
@@ -59,9 +63,7 @@ std::string write_digested_in_blocks(H5File& f, const std::string& dataset, std:
     fill(first, count, out);
     h.add(std::span<const double>(out));
   });
-  const std::string hex = h.hex();
-  f.set_attribute(dataset, digest_name(kind), hex);
-  return hex;
+  return h.record(f);
 }
 
 std::string verify_digest(const H5File& f, const std::string& dataset, std::span<const double> values,

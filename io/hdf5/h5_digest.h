@@ -28,6 +28,9 @@ class DatasetDigest {
   }
   /// Finishes the digest; hex digits.
   std::string hex() { return digest_.hex(); }
+  /// Finishes the digest and stores it as the dataset's digest attribute in `file`.
+  /// Returns it.
+  std::string record(H5File& file);
   /// Finishes the digest and compares it with the dataset's digest attribute in `file`:
   /// FormatError naming the file and dataset when it is missing or differs. Returns it.
   std::string verify(const H5File& file);
