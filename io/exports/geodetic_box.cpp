@@ -12,19 +12,20 @@ namespace {
 constexpr double kDegree = 180.0 / std::numbers::pi;
 constexpr double kRoundingSlack = 1.0 + 1e-9;  // covers the doubles' rounding in the margins below
 
-// A margin in metres as degrees of latitude and of longitude at latitudes up to
-// |max_latitude| (both outward).
+}  // namespace
+
 double metres_as_latitude(double metres) { return metres / kWgs84SmallestRadius * kDegree * kRoundingSlack; }
 
 double metres_as_longitude(double metres, double max_latitude) {
   return metres / (kWgs84EquatorialRadius * std::cos(std::abs(max_latitude) / kDegree)) * kDegree * kRoundingSlack;
 }
 
-}  // namespace
+double geodetic_curvature(double max_latitude) {
+  return 4.0 * (1.0 + std::tan(std::abs(max_latitude) / kDegree)) / kWgs84SmallestRadius * kRoundingSlack;
+}
 
 double geodetic_margin(double piece, double max_latitude) {
-  const double curvature = 4.0 * (1.0 + std::tan(std::abs(max_latitude) / kDegree)) / kWgs84SmallestRadius;
-  return (kLocalFrameError + piece * piece * curvature / 8.0) * kRoundingSlack;
+  return (kLocalFrameError + piece * piece * geodetic_curvature(max_latitude) / 8.0) * kRoundingSlack;
 }
 
 double farthest_latitude(double origin_latitude) {

@@ -23,9 +23,18 @@ struct GeodeticBox {
   double latitude_lo, latitude_hi, longitude_lo, longitude_hi;
 };
 
+/// K (1/m): the bound of the plane-to-geodetic map's second derivative along any
+/// straight local line, at latitudes up to |max_latitude| degrees.
+double geodetic_curvature(double max_latitude);
+
 /// The widening (m) that covers the chord deviation of pieces up to `piece` metres
 /// long at latitudes up to |max_latitude| degrees, plus the conversion error.
 double geodetic_margin(double piece, double max_latitude);
+
+/// A margin in metres as degrees of latitude, and of longitude at latitudes up to
+/// |max_latitude| degrees (both outward).
+double metres_as_latitude(double metres);
+double metres_as_longitude(double metres, double max_latitude);
 
 /// Largest |latitude| (degrees) the geodetic exports accept for an origin: the
 /// longitude's scale grows without bound toward the poles.

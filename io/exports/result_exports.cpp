@@ -6,7 +6,7 @@
 
 #include "io/exports/export_csv.h"
 #include "io/output/atomic_output.h"
-#include "io/exports/geodetic_box.h"
+#include "io/exports/geodetic_grid.h"
 #include "io/format_error.h"
 #include "io/imports/csv_number.h"
 #include "io/io_version.h"
@@ -29,11 +29,29 @@ std::optional<LocalFrame> geodetic_frame(const SolveResult& r) {
 
 // Geodetic bounds of a local box: outward when bounded and within the export radius,
 // the whole globe when unbounded or farther, NaN when empty (an inconsistent result).
-GeodeticBox geodetic_bounds(const LocalFrame& frame, const Interval& north, const Interval& east) {
+GeodeticBox geodetic_bounds(GeodeticGrid& grid, const Interval& north, const Interval& east) {
   if (north.is_empty() || east.is_empty()) return {NAN, NAN, NAN, NAN};
   if (!north.is_bounded() || !east.is_bounded() || !within_export_radius(north, east)) return {-90.0, 90.0, -180.0, 180.0};
-  return geodetic_box(frame, north, east);
+  return grid.box(north, east);
 }
+
+// The geodetic columns of a result's CSV rows: NaN throughout when its origin does not
+// allow them.
+class GeodeticColumns {
+ public:
+  explicit GeodeticColumns(const SolveResult& r) : frame_(geodetic_frame(r)) {
+    if (frame_) grid_.emplace(*frame_);
+  }
+  GeodeticColumns(const GeodeticColumns&) = delete;  // the grid refers to the frame
+  GeodeticColumns& operator=(const GeodeticColumns&) = delete;
+  GeodeticBox operator()(const Interval& north, const Interval& east) {
+    return grid_ ? geodetic_bounds(*grid_, north, east) : kNoGeodeticBox;
+  }
+
+ private:
+  std::optional<LocalFrame> frame_;
+  std::optional<GeodeticGrid> grid_;
+};
 
 void append_bounds(std::string& row, const Interval& x) {
   row += ',';
@@ -106,7 +124,7 @@ int marks_of_mine(const MissionSolution& s, int mine) {
 }
 
 void write_mines_csv(const SolveResult& r, const std::string& path) {
-  const std::optional<LocalFrame> frame = geodetic_frame(r);
+  GeodeticColumns geodetic(r);
   const MissionSolution& s = r.solution;
   std::string text =
       "mine,marks,north_lo,north_hi,east_lo,east_hi,down_lo,down_hi,latitude_lo,latitude_hi,longitude_lo,longitude_hi,"
@@ -115,14 +133,14 @@ void write_mines_csv(const SolveResult& r, const std::string& path) {
     const Vec3I& m = s.domains.mines[i];
     text += std::to_string(i) + "," + std::to_string(marks_of_mine(s, static_cast<int>(i)));
     for (int c = 0; c < 3; ++c) append_bounds(text, m[c]);
-    append_geodetic(text, frame ? geodetic_bounds(*frame, m[0], m[1]) : kNoGeodeticBox);
+    append_geodetic(text, geodetic(m[0], m[1]));
     text += std::string(",") + status_name(s) + "\n";
   }
   write_text_file(path, text);
 }
 
 void write_tube_csv(const SolveResult& r, const std::string& path) {
-  const std::optional<LocalFrame> frame = geodetic_frame(r);
+  GeodeticColumns geodetic(r);
   const MissionSolution& s = r.solution;
   const TubeDomains& d = s.domains;
   if (d.size() != s.time.size()) throw FormatError(path + ": the result was read without its tube");
@@ -137,7 +155,7 @@ void write_tube_csv(const SolveResult& r, const std::string& path) {
       append_bounds(row, d.px[k]);
       append_bounds(row, d.py[k]);
       append_bounds(row, d.pz[k]);
-      append_geodetic(row, frame ? geodetic_bounds(*frame, d.px[k], d.py[k]) : kNoGeodeticBox);
+      append_geodetic(row, geodetic(d.px[k], d.py[k]));
       row += std::string(",") + status_name(s) + "\n";
       out.write(row.data(), static_cast<std::streamsize>(row.size()));
     }
@@ -148,6 +166,7 @@ void write_geojson(const SolveResult& r, const Mission* mission, const std::stri
   if (const std::string why = geodetic_problem(r.origin); !why.empty()) throw FormatError(path + ": " + why);
   const GeoOrigin origin = *r.origin;
   const LocalFrame frame(origin);
+  GeodeticGrid grid(frame);  // the mines' boxes as in the mines CSV
   const MissionSolution& s = r.solution;
   const TubeDomains& d = s.domains;
   const std::string status = status_name(s);
@@ -188,7 +207,7 @@ void write_geojson(const SolveResult& r, const Mission* mission, const std::stri
       properties["down_lo_m"] = m[2].lo();
       properties["down_hi_m"] = m[2].hi();
     }
-    features.push_back(feature(std::move(properties), {{"type", "Polygon"}, {"coordinates", box_ring(geodetic_box(frame, m[0], m[1]))}}));
+    features.push_back(feature(std::move(properties), {{"type", "Polygon"}, {"coordinates", box_ring(grid.box(m[0], m[1]))}}));
   }
   if (mission)
     for (std::size_t i = 0; i < mission->gps_time.size(); ++i) {

@@ -7,7 +7,7 @@
 //     of the tube's boxes simplified only outward; the mine boxes as polygons; the GPS
 //     fixes as points when the mission is given.
 // Local bounds are written exactly (shortest round-trip text); geodetic bounds are
-// outward (io/exports/geodetic_box.h), so they contain the local ones. Every row and
+// outward (io/exports/geodetic_grid.h), so they contain the local ones. Every row and
 // feature carries the result's status: an inconsistent result's boxes are no answer.
 
 #include <optional>
