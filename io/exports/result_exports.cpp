@@ -139,26 +139,33 @@ void write_mines_csv(const SolveResult& r, const std::string& path) {
   write_text_file(path, text);
 }
 
-void write_tube_csv(const SolveResult& r, const std::string& path) {
-  GeodeticColumns geodetic(r);
-  const MissionSolution& s = r.solution;
-  const TubeDomains& d = s.domains;
-  if (d.size() != s.time.size()) throw FormatError(path + ": the result was read without its tube");
+void write_tube_csv(const std::string& result_path, const std::string& path) {
   write_text_file(path, [&](std::ostream& out) {
-    out << "time" << (r.epoch ? ",utc" : "")
-        << ",north_lo,north_hi,east_lo,east_hi,down_lo,down_hi,latitude_lo,latitude_hi,longitude_lo,longitude_hi,status\n";
+    std::optional<GeodeticColumns> geodetic;  // with the header, from the first block
     std::string row;
-    for (std::size_t k = 0; k < d.size(); ++k) {
-      row.clear();
-      append_number(row, s.time[k]);
-      if (r.epoch) row += "," + format_iso8601_micro(*r.epoch, s.time[k]);
-      append_bounds(row, d.px[k]);
-      append_bounds(row, d.py[k]);
-      append_bounds(row, d.pz[k]);
-      append_geodetic(row, geodetic(d.px[k], d.py[k]));
-      row += std::string(",") + status_name(s) + "\n";
-      out.write(row.data(), static_cast<std::streamsize>(row.size()));
-    }
+    const auto rows = [&](const SolveResult& r, std::size_t first, std::span<const Interval> north,
+                          std::span<const Interval> east, std::span<const Interval> down) {
+      const MissionSolution& s = r.solution;
+      if (!geodetic) {
+        geodetic.emplace(r);
+        out << "time" << (r.epoch ? ",utc" : "")
+            << ",north_lo,north_hi,east_lo,east_hi,down_lo,down_hi,latitude_lo,latitude_hi,longitude_lo,longitude_hi,"
+               "status\n";
+      }
+      for (std::size_t i = 0; i < north.size(); ++i) {
+        const double time = s.time[first + i];
+        row.clear();
+        append_number(row, time);
+        if (r.epoch) row += "," + format_iso8601_micro(*r.epoch, time);
+        append_bounds(row, north[i]);
+        append_bounds(row, east[i]);
+        append_bounds(row, down[i]);
+        append_geodetic(row, (*geodetic)(north[i], east[i]));
+        row += std::string(",") + status_name(s) + "\n";
+        out.write(row.data(), static_cast<std::streamsize>(row.size()));
+      }
+    };
+    read_result(result_path, {.tube = false, .increments = false, .waterfall = false, .tube_rows = rows});
   });
 }
 

@@ -1,5 +1,6 @@
 #include "io/files/result_file.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -127,10 +128,13 @@ void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interv
 
 // Reads N x 3 bounds; an interval is [lo, hi] with lo <= hi, lo < +inf, hi > -inf,
 // or empty (both NaN). The lower and upper datasets are read in step, in blocks: no
-// whole copy of either (240 MB at 10^7 steps). A changed digest is reported before a bad
-// row (the row may be the edit): the first bad row is kept until both are checked.
-void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interval>* axes[3], std::size_t n,
-                 std::optional<DigestKind> verified) {
+// whole copy of either (240 MB at 10^7 steps). Each block's intervals go to the three
+// arrays `into(first, count)` gives for its rows, then `done(first, count)` is called. A
+// changed digest is reported before a bad row (the row may be the edit): the first bad
+// row is kept until both are checked.
+template <class Into, class Done>
+void read_bound_blocks(const H5File& f, const std::string& prefix, std::size_t n, std::optional<DigestKind> verified,
+                       Into&& into, Done&& done) {
   H5File::RowBlocks lower(f, prefix + "/lower", 3), upper(f, prefix + "/upper", 3);
   for (const H5File::RowBlocks* bounds : {&lower, &upper})
     if (bounds->rows() != n)
@@ -141,7 +145,6 @@ void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interva
     lower_digest.emplace(prefix + "/lower", n, 3, *verified);
     upper_digest.emplace(prefix + "/upper", n, 3, *verified);
   }
-  for (std::size_t c = 0; c < 3; ++c) axes[c]->resize(n);
   std::string first_bad_row;
   for (std::span<const double> lo_rows = lower.next(), hi_rows = upper.next(); !lo_rows.empty();
        lo_rows = lower.next(), hi_rows = upper.next()) {
@@ -149,21 +152,48 @@ void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interva
       lower_digest->add(lo_rows);
       upper_digest->add(hi_rows);
     }
+    const std::size_t first = lower.first(), count = lo_rows.size() / 3;
+    const std::array<Interval*, 3> axes = into(first, count);
     for (std::size_t i = 0; i < lo_rows.size(); ++i) {
       const double lo = lo_rows[i], hi = hi_rows[i];
       const bool empty = std::isnan(lo) && std::isnan(hi);
-      const std::size_t k = lower.first() + i / 3;
       if (!empty && !(lo <= hi && lo < INFINITY && hi > -INFINITY) && first_bad_row.empty())
-        first_bad_row = "row " + std::to_string(k) + ": not an interval (lower " + format_number(lo) + ", upper " +
-                        format_number(hi) + ")";
-      (*axes[i % 3])[k] = empty ? Interval::empty() : Interval(lo, hi);
+        first_bad_row = "row " + std::to_string(first + i / 3) + ": not an interval (lower " + format_number(lo) +
+                        ", upper " + format_number(hi) + ")";
+      axes[i % 3][i / 3] = empty ? Interval::empty() : Interval(lo, hi);
     }
+    done(first, count);
   }
   if (verified) {
     lower_digest->verify(f);
     upper_digest->verify(f);
   }
   if (!first_bad_row.empty()) bad(f, prefix, first_bad_row);
+}
+
+// read_bound_blocks() into three whole arrays.
+void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interval>* axes[3], std::size_t n,
+                 std::optional<DigestKind> verified) {
+  for (std::size_t c = 0; c < 3; ++c) axes[c]->resize(n);
+  read_bound_blocks(
+      f, prefix, n, verified,
+      [&](std::size_t first, std::size_t) {
+        return std::array<Interval*, 3>{axes[0]->data() + first, axes[1]->data() + first, axes[2]->data() + first};
+      },
+      [](std::size_t, std::size_t) {});
+}
+
+// read_bound_blocks() handing each block to `rows` (ResultParts::tube_rows).
+void read_bounds_streamed(const H5File& f, const std::string& prefix, std::size_t n, std::optional<DigestKind> verified,
+                          const SolveResult& so_far, const TubeRows& rows) {
+  std::vector<Interval> block[3];
+  read_bound_blocks(
+      f, prefix, n, verified,
+      [&](std::size_t, std::size_t count) {
+        for (std::vector<Interval>& axis : block) axis.resize(count);
+        return std::array<Interval*, 3>{block[0].data(), block[1].data(), block[2].data()};
+      },
+      [&](std::size_t first, std::size_t) { rows(so_far, first, block[0], block[1], block[2]); });
 }
 
 void expect_flags(const H5File& f, const std::string& dataset, const std::vector<std::int32_t>& values) {
@@ -370,9 +400,13 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     if (!std::isfinite(s.time[k]) || (k > 0 && !(s.time[k] > s.time[k - 1])))
       bad(f, "/time", "row " + std::to_string(k) + ": times must be finite and increase");
   TubeDomains& d = s.domains;
-  if (parts.tube) {
+  if (parts.tube_rows) {
+    read_bounds_streamed(f, "/tube", n, verified, r, parts.tube_rows);
+  } else if (parts.tube) {
     std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
     read_bounds(f, "/tube", tube, n, verified);
+  }
+  if (parts.increments && parts.tube && !parts.tube_rows) {
     std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
     read_bounds(f, "/increments", increments, n - 1, verified);
   }

@@ -10,8 +10,10 @@
 // domains (docs/guarantees.md).
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -46,12 +48,23 @@ struct SolveResult {
   std::int64_t format_version = kResultFormat;
 };
 
+/// Rows of a tube handed over block by block: `result` holds what was read before the
+/// tube (attributes, times), x, y and z the rows first to first + x.size() - 1.
+using TubeRows = std::function<void(const SolveResult& result, std::size_t first, std::span<const Interval> x,
+                                    std::span<const Interval> y, std::span<const Interval> z)>;
+
 /// The parts of a result a reader needs besides its attributes, times, mine boxes and
 /// mark table. Parts left out stay empty; the root digest still covers their digests,
 /// and every dataset read is checked against its own.
 struct ResultParts {
-  bool tube = true;  // the tube and the increments (warm starts, exports)
+  bool tube = true;        // the tube (warm starts, exports)
+  bool increments = true;  // with the tube (warm starts)
   bool waterfall = true;
+  /// When set, the tube's rows go there block by block, in order, instead of into the
+  /// result (without its increments): a tube of 10^7 steps is 480 MB. An error found
+  /// later (a digest, a row) is thrown after the blocks it covers were handed over, so
+  /// the receiver writes to a temporary output.
+  TubeRows tube_rows = nullptr;
 };
 
 /// Records in `result` what it was computed from: the digests of the mission's

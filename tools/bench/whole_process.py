@@ -76,6 +76,7 @@ def commands(gesmi, folder, mission):
          None),
         ("waterfall", [gesmi, "waterfall", result, "-o", f"{folder}/wf.png"], None, None),
         ("candidates", [gesmi, "candidates", result], None, None),
+        ("export tube-csv", [gesmi, "export", result, "--format", "tube-csv", "-o", f"{folder}/tube.csv"], None, None),
         ("kalman", [gesmi, "kalman", mission, "-o", f"{folder}/k.h5"], None, None),
         ("export csv", [gesmi, "export", mission, "-o", f"{folder}/csv"], None, f"{folder}/csv"),
     ]
@@ -118,7 +119,7 @@ def main():
                     operator = [operator[0] + cpu, operator[1] + wall]
                 print(f"| {name} | {steps:,} | {cpu:.3f} | {wall:.3f} | {peak:.0f} | {runs} |", flush=True)
             if not args.only:
-                print(f"| operator iteration (the four above) | {steps:,} | {operator[0]:.3f} | {operator[1]:.3f} | | |")
+                print(f"| operator iteration (marks add, solve --from, waterfall, candidates) | {steps:,} | {operator[0]:.3f} | {operator[1]:.3f} | | |")
     finally:
         if not args.keep:
             shutil.rmtree(folder, ignore_errors=True)

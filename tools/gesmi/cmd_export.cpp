@@ -53,7 +53,8 @@ int export_result(const po::variables_map& v, const std::string& format, const s
   const std::string path = v["file"].as<std::string>();
   Progress progress("gesmi export:");  // on a terminal, for long runs only (progress.h)
   progress.update(-1.0, "reading " + path);
-  const io::SolveResult r = io::read_result(path, {.tube = format != "mines-csv", .waterfall = false});
+  // The tube CSV reads the tube again, block by block, as it writes its rows.
+  const io::SolveResult r = io::read_result(path, {.tube = format == "geojson", .increments = false, .waterfall = false});
   if (!r.solution.report.consistent) progress.finish();  // before the refusal's line, or the notes below
   if (!accept_result_status(v, "export", path, r.solution.report.consistent)) return kExitInconsistent;
   if (const std::string why = io::geodetic_problem(r.origin); !why.empty()) {
@@ -69,7 +70,7 @@ int export_result(const po::variables_map& v, const std::string& format, const s
                        " was solved from (its navigation digest differs)");
   }
   progress.update(-1.0, "writing " + output);
-  if (format == "tube-csv") io::write_tube_csv(r, output);
+  if (format == "tube-csv") io::write_tube_csv(path, output);
   if (format == "mines-csv") io::write_mines_csv(r, output);
   if (format == "geojson") io::write_geojson(r, mission ? &*mission : nullptr, output);
   outputs.commit();

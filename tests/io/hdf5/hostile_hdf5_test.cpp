@@ -168,22 +168,33 @@ TEST(HostileHdf5, EditedResultsAreRefusedNamingWhatDiffers) {
   for (const Case& c : cases) expect_refused(samples().result, c, [](const std::string& p) { return read_result(p); });
 }
 
+// A result of more than two blocks of rows (H5File::kBlockRows), made once.
+const std::string& three_block_result() {
+  static const std::string result = [] {
+    const std::string folder = test::temp_folder("hostile-blocks");
+    const std::string mission = folder + "/m.h5", out = folder + "/r.h5";
+    EXPECT_EQ(test::run_gesmi({"simulate", "--seed", "3", "--duration", "1800", "-o", mission}).exit_code, 0);
+    EXPECT_EQ(test::run_gesmi({"solve", mission, "-o", out}).exit_code, 0);
+    return out;
+  }();
+  return result;
+}
+
+// h5py lines recomputing a N x 3 dataset's digest the way gesmi computes it (Python's
+// xxhash).
+std::string redigest(const char* dataset) {
+  return std::string("import xxhash, struct\nname = b'") + dataset + "'\nv = f['" + dataset + "'][:]\n"
+         "f['" + dataset + "'].attrs['xxh128'] = xxhash.xxh3_128_hexdigest(struct.pack('<Q', len(name)) + name + "
+         "struct.pack('<QQQ', v.shape[0], 3, v.size) + v.astype('<f8').tobytes())\n";
+}
+
 TEST(HostileHdf5, ABadRowInALaterBlockIsNamedOnceTheDigestsAreChecked) {
   // The tube and increments are read in blocks of H5File::kBlockRows rows, lower and
   // upper in step: a bad row in the third block is named by its row in the whole
   // dataset, and only once the digests are checked (the bad row may be the edit).
-  const std::string folder = test::temp_folder("hostile-blocks");
-  const std::string mission = folder + "/m.h5", result = folder + "/r.h5";
-  ASSERT_EQ(test::run_gesmi({"simulate", "--seed", "3", "--duration", "1800", "-o", mission}).exit_code, 0);
-  ASSERT_EQ(test::run_gesmi({"solve", mission, "-o", result}).exit_code, 0);
+  const std::string& result = three_block_result();
   ASSERT_GT(read_result(result).solution.time.size(), 2 * H5File::kBlockRows + 124);
   const std::string row = std::to_string(2 * H5File::kBlockRows + 123);
-  // The dataset's digest recomputed the way gesmi computes it (Python's xxhash).
-  const auto redigest = [](const char* dataset) {
-    return std::string("import xxhash, struct\nname = b'") + dataset + "'\nv = f['" + dataset + "'][:]\n"
-           "f['" + dataset + "'].attrs['xxh128'] = xxhash.xxh3_128_hexdigest(struct.pack('<Q', len(name)) + name + "
-           "struct.pack('<QQQ', v.shape[0], 3, v.size) + v.astype('<f8').tobytes())\n";
-  };
   const std::string cross = "lo = f['/tube/lower'][:]\nlo[" + row + ", 1] = 1e9\nf['/tube/lower'][:] = lo\n";
   const std::string cross_increment = "hi = f['/increments/upper'][:]\nhi[" + row + ", 2] = -1e9\nf['/increments/upper'][:] = hi\n";
   const std::string cross_redigested = cross + redigest("/tube/lower"),
@@ -197,6 +208,63 @@ TEST(HostileHdf5, ABadRowInALaterBlockIsNamedOnceTheDigestsAreChecked) {
       {cross_increment_redigested.c_str(), named_increment.c_str()},
   };
   for (const Case& c : cases) expect_refused(result, c, [](const std::string& p) { return read_result(p); });
+}
+
+TEST(ResultTubeRows, AreTheWholeTubeInOrderBlockByBlock) {
+  const std::string& result = three_block_result();
+  const TubeDomains whole = read_result(result, {.waterfall = false}).solution.domains;
+  std::size_t next = 0, blocks = 0;
+  const auto rows = [&](const SolveResult& so_far, std::size_t first, std::span<const Interval> x,
+                        std::span<const Interval> y, std::span<const Interval> z) {
+    ASSERT_EQ(first, next);
+    ASSERT_EQ(so_far.solution.time.size(), whole.size());  // the times come before the tube
+    ASSERT_LE(x.size(), H5File::kBlockRows);
+    ASSERT_EQ(y.size(), x.size());
+    ASSERT_EQ(z.size(), x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      ASSERT_TRUE(x[i] == whole.px[first + i] && y[i] == whole.py[first + i] && z[i] == whole.pz[first + i]) << first + i;
+    }
+    next += x.size();
+    ++blocks;
+  };
+  const SolveResult streamed = read_result(result, {.waterfall = false, .tube_rows = rows});
+  EXPECT_EQ(next, whole.size());
+  EXPECT_EQ(blocks, (whole.size() + H5File::kBlockRows - 1) / H5File::kBlockRows);
+  EXPECT_TRUE(streamed.solution.domains.px.empty());  // handed over, not kept
+  EXPECT_TRUE(streamed.solution.domains.dx.empty());
+}
+
+TEST(HostileHdf5, TheTubeCsvExportWritesNothingForAnEditedTube) {
+  // `gesmi export --format tube-csv` writes its rows as the tube's blocks arrive: a
+  // changed digest found after two blocks were written still leaves no file. (A
+  // recomputed dataset digest changes the root digest, which the export checks first.)
+  const std::string& result = three_block_result();
+  const std::string row = std::to_string(2 * H5File::kBlockRows + 123);
+  const std::string cross = "hi = f['/tube/upper'][:]\nhi[" + row + ", 0] = -1e9\nf['/tube/upper'][:] = hi\n";
+  const std::string cross_redigested = cross + redigest("/tube/upper");
+  const Case cases[] = {
+      {cross.c_str(), "/tube/upper: contents differ from the XXH3-128 digest"},
+      {cross_redigested.c_str(), "/: attributes or dataset digests differ"},
+      {"f.attrs['sweeps'] = np.int64(999)", "/: attributes or dataset digests differ"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.edit);
+    const std::string path = edited(result, c.edit), folder = test::temp_folder("hostile-tube-csv");
+    const test::CommandResult run = test::run_gesmi({"export", path, "--format", "tube-csv", "-o", folder + "/t.csv"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_NE(run.err.find(path + ": " ), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(c.must_name), std::string::npos) << run.err;
+    EXPECT_EQ(test::line_count(run.err), 1) << run.err;
+    EXPECT_TRUE(test::names_in(folder).empty());
+  }
+  // Unedited, it writes one row a sample.
+  const std::string folder = test::temp_folder("tube-csv");
+  ASSERT_EQ(test::run_gesmi({"export", result, "--format", "tube-csv", "-o", folder + "/t.csv"}).exit_code, 0);
+  std::ifstream csv(folder + "/t.csv");
+  std::string line;
+  std::size_t lines = 0;
+  while (std::getline(csv, line)) ++lines;
+  EXPECT_EQ(lines, read_result(result, {.tube = false, .waterfall = false}).solution.time.size() + 1);
 }
 
 TEST(HostileHdf5, PartialReadsCheckWhatTheyReadAndTheRootDigest) {
