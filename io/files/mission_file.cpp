@@ -128,10 +128,26 @@ void check_truth_shapes(const H5File& f, const std::string& path, const Mission&
   expect("/truth/mines", static_cast<std::size_t>(m.mine_count), "one row per mine");
 }
 
-// Reads /truth into m, whose navigation and marks are read (their shapes are the truth's).
-void read_truth_datasets(const H5File& f, const std::string& path, Mission& m) {
+// Hands /truth/position to `positions` block by block, each value checked finite as
+// validate_truth() checks the whole arrays.
+void stream_truth_positions(const H5File& f, const std::string& path, const MissionReader::TruthPositions& positions) {
+  H5File::RowBlocks blocks(f, "/truth/position", 3, 2);
+  for (std::span<const double> rows = blocks.next(); !rows.empty(); rows = blocks.next()) {
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      if (!std::isfinite(rows[i]))
+        bad(path, "/truth/position",
+            row_text(blocks.first() + i / 3) + ": position is " + (std::isnan(rows[i]) ? "NaN" : "infinite"));
+    positions(blocks.first(), rows);
+  }
+}
+
+// Reads /truth into m, whose navigation and marks are read (their shapes are the truth's);
+// the positions to `positions` instead when given.
+void read_truth_datasets(const H5File& f, const std::string& path, Mission& m,
+                         const MissionReader::TruthPositions* positions = nullptr) {
   check_truth_shapes(f, path, m);
-  if (f.has("/truth/position")) {
+  if (f.has("/truth/position") && positions) stream_truth_positions(f, path, *positions);
+  if (f.has("/truth/position") && !positions) {
     std::vector<double>* position[3] = {&m.truth_x, &m.truth_y, &m.truth_z};
     f.read_columns_into("/truth/position", position);
   }
@@ -307,10 +323,14 @@ Mission MissionReader::read(TruthReading truth) const {
   return m;
 }
 
-void MissionReader::read_truth(Mission& m) const {
+void MissionReader::read_truth(Mission& m) const { read_truth_into(m, nullptr); }
+
+void MissionReader::read_truth(Mission& m, const TruthPositions& positions) const { read_truth_into(m, &positions); }
+
+void MissionReader::read_truth_into(Mission& m, const TruthPositions* positions) const {
   if (m.has_truth() || !m.truth_mines.empty()) throw std::logic_error("MissionReader::read_truth: the truth was read already");
   try {
-    read_truth_datasets(file_, path_, m);
+    read_truth_datasets(file_, path_, m, positions);
     validate_truth(m, path_);
   } catch (...) {  // the mission stays as it was: without truth
     for (auto* column : {&m.truth_x, &m.truth_y, &m.truth_z, &m.truth_mines, &m.truth_missed_marks})

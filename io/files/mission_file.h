@@ -3,7 +3,9 @@
 // origin, sensor model and, for simulated missions, the truth. read_mission()
 // validates everything and names file, dataset, row, field and reason on error.
 
+#include <functional>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "io/hdf5/h5_file.h"
@@ -32,8 +34,15 @@ class MissionReader {
   /// if it holds a truth already), with the checks of read(); FormatError naming the
   /// dataset, the mission then unchanged.
   void read_truth(Mission& mission) const;
+  /// read_truth(), but the true positions are not kept (240 MB at 10^7 steps): each
+  /// block of rows of /truth/position (north, east, down; row-major), checked, goes to
+  /// `positions(first, rows)`, rows first to first + rows.size() / 3 - 1.
+  using TruthPositions = std::function<void(std::size_t first, std::span<const double> rows)>;
+  void read_truth(Mission& mission, const TruthPositions& positions) const;
 
  private:
+  void read_truth_into(Mission& mission, const TruthPositions* positions) const;
+
   std::string path_;
   H5File file_;
 };

@@ -241,28 +241,39 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
 }
 
 Containment three_sigma_containment(const KalmanResult& r, const Mission& m) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  if (!m.has_truth()) return {nan, nan, nan, nan};
-  Containment c;
-  std::size_t horizontal = 0, vertical = 0;
-  const double* truth[3] = {m.truth_x.data(), m.truth_y.data(), m.truth_z.data()};
-  const auto within = [&](std::size_t k, std::size_t a) {
-    return std::fabs(truth[a][k] - r.mean[3 * k + a]) <= 3.0 * std::sqrt(r.covariance[9 * k + 4 * a]);
+  ContainmentCount count(r);
+  for (std::size_t k = 0; k < m.truth_x.size(); ++k) count.add(k, m.truth_x[k], m.truth_y[k], m.truth_z[k]);
+  return count.finish(m.truth_mines);
+}
+
+void ContainmentCount::add(std::size_t k, double north, double east, double down) {
+  if (k != steps_ || k >= result_.steps) throw std::logic_error("ContainmentCount: steps must come once each, in order");
+  const KalmanResult& r = result_;
+  const double truth[3] = {north, east, down};
+  const auto within = [&](std::size_t a) {
+    return std::fabs(truth[a] - r.mean[3 * k + a]) <= 3.0 * std::sqrt(r.covariance[9 * k + 4 * a]);
   };
-  for (std::size_t k = 0; k < r.steps; ++k) {
-    horizontal += within(k, 0) && within(k, 1);
-    vertical += within(k, 2);
-  }
-  c.horizontal = static_cast<double>(horizontal) / static_cast<double>(r.steps);
-  c.vertical = static_cast<double>(vertical) / static_cast<double>(r.steps);
+  horizontal_ += within(0) && within(1);
+  vertical_ += within(2);
+  ++steps_;
+}
+
+Containment ContainmentCount::finish(std::span<const double> truth_mines) const {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (steps_ == 0) return {nan, nan, nan, nan};
+  const KalmanResult& r = result_;
+  if (steps_ != r.steps) throw std::logic_error("ContainmentCount: the truth of some steps is missing");
+  Containment c;
+  c.horizontal = static_cast<double>(horizontal_) / static_cast<double>(r.steps);
+  c.vertical = static_cast<double>(vertical_) / static_cast<double>(r.steps);
   const double limit_3d = chi_square_quantile(3.0, kResidualTestProbability);
   const double limit_plane = chi_square_quantile(2.0, kResidualTestProbability);
   std::size_t inside = 0, inside_plane = 0, seen = 0;
-  for (std::size_t i = 0; i < r.mines && 3 * i + 2 < m.truth_mines.size(); ++i) {
+  for (std::size_t i = 0; i < r.mines && 3 * i + 2 < truth_mines.size(); ++i) {
     if (std::isnan(r.mine_mean[3 * i])) continue;
     ++seen;
-    const Vec3d e(m.truth_mines[3 * i] - r.mine_mean[3 * i], m.truth_mines[3 * i + 1] - r.mine_mean[3 * i + 1],
-                  m.truth_mines[3 * i + 2] - r.mine_mean[3 * i + 2]);
+    const Vec3d e(truth_mines[3 * i] - r.mine_mean[3 * i], truth_mines[3 * i + 1] - r.mine_mean[3 * i + 1],
+                  truth_mines[3 * i + 2] - r.mine_mean[3 * i + 2]);
     const Mat3d cov = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(&r.mine_covariance[9 * i]);
     inside += e.dot(cov.ldlt().solve(e)) <= limit_3d;
     const Eigen::Vector2d e2 = e.head<2>();

@@ -79,4 +79,20 @@ struct Containment {
 };
 Containment three_sigma_containment(const KalmanResult& result, const Mission& mission);
 
+/// three_sigma_containment() with the true positions given row by row, in order, as a
+/// reader streams them (the truth of 10^7 steps is 240 MB).
+class ContainmentCount {
+ public:
+  explicit ContainmentCount(const KalmanResult& result) : result_(result) {}
+  /// The true position (north, east, down) of step k, the next one.
+  void add(std::size_t k, double north, double east, double down);
+  /// The fractions, with the true mines (K x 3, row-major); all NaN when no step was
+  /// added (a mission without truth). std::logic_error when some steps were missed.
+  Containment finish(std::span<const double> truth_mines) const;
+
+ private:
+  const KalmanResult& result_;
+  std::size_t steps_ = 0, horizontal_ = 0, vertical_ = 0;
+};
+
 }  // namespace gesmi

@@ -160,6 +160,55 @@ TEST(MissionFile, ReadsTheTruthAfterTheMissionFromTheSameFile) {
               r.truth_gps_outlier.empty());
 }
 
+// gesmi kalman counts the true positions as they are read, block by block, without
+// keeping them: the blocks come in order and hold the whole truth; a bad value in a
+// later block is named by its row and leaves the mission without truth.
+TEST(MissionFile, StreamsTheTruePositionsBlockByBlock) {
+  const std::string folder = test::temp_folder("mission-truth-blocks");
+  const std::string path = folder + "/m.h5";
+  ASSERT_EQ(test::run_gesmi({"simulate", "--seed", "3", "--duration", "1800", "-o", path}).exit_code, 0);
+  const Mission whole = read_mission(path);
+  ASSERT_GT(whole.size(), 2 * H5File::kBlockRows);
+  std::vector<double> north, east, down;
+  std::size_t blocks = 0;
+  const auto collect = [&](std::size_t first, std::span<const double> rows) {
+    ASSERT_EQ(first, north.size());
+    ASSERT_EQ(rows.size() % 3, 0u);
+    for (std::size_t i = 0; i < rows.size(); i += 3) {
+      north.push_back(rows[i]);
+      east.push_back(rows[i + 1]);
+      down.push_back(rows[i + 2]);
+    }
+    ++blocks;
+  };
+  const MissionReader reader(path);
+  Mission r = reader.read(TruthReading::skip);
+  reader.read_truth(r, collect);
+  EXPECT_EQ(north, whole.truth_x);
+  EXPECT_EQ(east, whole.truth_y);
+  EXPECT_EQ(down, whole.truth_z);
+  EXPECT_EQ(blocks, (whole.size() + H5File::kBlockRows - 1) / H5File::kBlockRows);
+  EXPECT_TRUE(r.truth_x.empty());  // handed over, not kept
+  EXPECT_EQ(r.truth_mines, whole.truth_mines);
+
+  const std::string row = std::to_string(2 * H5File::kBlockRows + 5);
+  const std::string nan_path = folder + "/nan.h5", script = folder + "/edit.py";
+  std::filesystem::copy_file(path, nan_path);
+  std::ofstream(script) << "import h5py, numpy as np, sys\nf = h5py.File(sys.argv[1], 'r+')\n"
+                        << "p = f['/truth/position'][:]\np[" << row << ", 2] = np.nan\nf['/truth/position'][:] = p\nf.close()\n";
+  ASSERT_EQ(std::system(("/usr/bin/python3 " + script + " " + nan_path).c_str()), 0);
+  const MissionReader nan_reader(nan_path);
+  Mission n = nan_reader.read(TruthReading::skip);
+  try {
+    nan_reader.read_truth(n, [](std::size_t, std::span<const double>) {});
+    ADD_FAILURE() << "a NaN true position was accepted";
+  } catch (const FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find(nan_path + ": /truth/position: row " + row + ": position is NaN"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(n.truth_mines.empty() && n.truth_marks_mine.empty());
+}
+
 TEST(MissionFile, NamesTheProblemOfEveryBadFile) {
   const std::string folder = test::temp_folder("bad");
   // Missing file, empty file, truncated file.

@@ -188,6 +188,19 @@ TEST(KalmanSmoother, ContainmentJudgesMinesByTheirRegionAndStepsPerAxis) {
   m.truth_mines[3] = m.truth_mines[4] = 0.0;  // the second mine at its mean
   EXPECT_DOUBLE_EQ(three_sigma_containment(r, m).mines, 1.0);
   EXPECT_TRUE(std::isnan(three_sigma_containment(r, Mission{}).horizontal));
+  // Counted step by step as a reader streams the truth (gesmi kalman): the same, and
+  // steps out of order or missing are refused.
+  ContainmentCount count(r);
+  count.add(0, m.truth_x[0], m.truth_y[0], m.truth_z[0]);
+  EXPECT_THROW(count.finish(m.truth_mines), std::logic_error);  // step 1 missing
+  EXPECT_THROW(count.add(0, 0.0, 0.0, 0.0), std::logic_error);  // step 0 again
+  count.add(1, m.truth_x[1], m.truth_y[1], m.truth_z[1]);
+  EXPECT_THROW(count.add(2, 0.0, 0.0, 0.0), std::logic_error);  // beyond the result's steps
+  const Containment streamed = count.finish(m.truth_mines);
+  EXPECT_DOUBLE_EQ(streamed.horizontal, 1.0);
+  EXPECT_DOUBLE_EQ(streamed.vertical, 0.5);
+  EXPECT_DOUBLE_EQ(streamed.mines, 1.0);
+  EXPECT_TRUE(std::isnan(ContainmentCount(r).finish(m.truth_mines).mines));  // no truth: all NaN
 }
 
 // A Gauss-Newton iteration still converging, slowly (each step about 0.6-0.7 of the one
