@@ -36,19 +36,20 @@ class GeodeticGrid {
   /// (bounded, non-empty and within_export_radius).
   GeodeticBox box(const Interval& north, const Interval& east);
 
+ private:
   /// A point along one axis as its tile and its fraction of the tile, in [0, 1].
   struct Cut {
     std::int64_t tile;
     double fraction;
   };
-
- private:
+  static bool cuts_of(double lo, double hi, double tile, std::vector<Cut>& cuts);
   struct Node {
     std::int64_t i, j;  // tile corner (i tile, j tile) north and east
     double latitude, longitude;
   };
-  /// The converted grid node (i, j), from the cache when there.
-  const Node& node(std::int64_t i, std::int64_t j);
+  /// The converted grid node (i, j), from the cache when there (a copy: the next call
+  /// may reuse its slot).
+  Node node(std::int64_t i, std::int64_t j);
 
   const LocalFrame& frame_;
   double tile_;

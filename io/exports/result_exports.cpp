@@ -139,7 +139,7 @@ void write_mines_csv(const SolveResult& r, const std::string& path) {
   write_text_file(path, text);
 }
 
-void write_tube_csv(const std::string& result_path, const std::string& path) {
+void write_tube_csv(const std::string& result_path, const SolveResult& read_before, const std::string& path) {
   write_text_file(path, [&](std::ostream& out) {
     std::optional<GeodeticColumns> geodetic;  // with the header, from the first block
     std::string row;
@@ -147,6 +147,9 @@ void write_tube_csv(const std::string& result_path, const std::string& path) {
                           std::span<const Interval> east, std::span<const Interval> down) {
       const MissionSolution& s = r.solution;
       if (!geodetic) {
+        if (s.report.consistent != read_before.solution.report.consistent || s.time != read_before.solution.time ||
+            r.navigation_digest != read_before.navigation_digest || r.marks_digest != read_before.marks_digest)
+          throw FormatError(result_path + ": changed while it was exported (replaced meanwhile?): export it again");
         geodetic.emplace(r);
         out << "time" << (r.epoch ? ",utc" : "")
             << ",north_lo,north_hi,east_lo,east_hi,down_lo,down_hi,latitude_lo,latitude_hi,longitude_lo,longitude_hi,"

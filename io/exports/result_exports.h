@@ -35,8 +35,9 @@ int marks_of_mine(const MissionSolution& solution, int mine);
 void write_mines_csv(const SolveResult& result, const std::string& path);
 /// The tube of the result file `result_path`, read block by block (a tube of 10^7 steps
 /// is 480 MB of bounds) and checked as read_result() checks it; nothing is written when
-/// the file is refused.
-void write_tube_csv(const std::string& result_path, const std::string& path);
+/// the file is refused, or when it no longer holds `read_before` (the same file read
+/// without its tube, whose status the caller accepted: replaced meanwhile).
+void write_tube_csv(const std::string& result_path, const SolveResult& read_before, const std::string& path);
 /// `fixes`: the mission whose GPS fixes become points (nullptr: none).
 void write_geojson(const SolveResult& result, const Mission* fixes, const std::string& path);
 

@@ -36,7 +36,10 @@ class MissionReader {
   void read_truth(Mission& mission) const;
   /// read_truth(), but the true positions are not kept (240 MB at 10^7 steps): each
   /// block of rows of /truth/position (north, east, down; row-major), checked, goes to
-  /// `positions(first, rows)`, rows first to first + rows.size() / 3 - 1.
+  /// `positions(first, rows)`, rows first to first + rows.size() / 3 - 1. The positions
+  /// are checked first, row by row (read_truth() checks every dataset after reading
+  /// them all, so a file with several faults may be refused for another one); on a
+  /// FormatError what `positions` received is to be discarded.
   using TruthPositions = std::function<void(std::size_t first, std::span<const double> rows)>;
   void read_truth(Mission& mission, const TruthPositions& positions) const;
 

@@ -1,5 +1,6 @@
 #include "io/files/result_file.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -183,17 +184,28 @@ void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interva
       [](std::size_t, std::size_t) {});
 }
 
-// read_bound_blocks() handing each block to `rows` (ResultParts::tube_rows).
-void read_bounds_streamed(const H5File& f, const std::string& prefix, std::size_t n, std::optional<DigestKind> verified,
+bool any_empty(std::span<const Interval> v) {
+  return std::any_of(v.begin(), v.end(), [](const Interval& x) { return x.is_empty(); });
+}
+
+// read_bound_blocks() handing each block to `rows` (ResultParts::tube_rows); whether
+// some interval was empty (read_result() checks that against the status, as for a
+// whole tube).
+bool read_bounds_streamed(const H5File& f, const std::string& prefix, std::size_t n, std::optional<DigestKind> verified,
                           const SolveResult& so_far, const TubeRows& rows) {
   std::vector<Interval> block[3];
+  bool empty = false;
   read_bound_blocks(
       f, prefix, n, verified,
       [&](std::size_t, std::size_t count) {
         for (std::vector<Interval>& axis : block) axis.resize(count);
         return std::array<Interval*, 3>{block[0].data(), block[1].data(), block[2].data()};
       },
-      [&](std::size_t first, std::size_t) { rows(so_far, first, block[0], block[1], block[2]); });
+      [&](std::size_t first, std::size_t) {
+        for (const std::vector<Interval>& axis : block) empty = empty || any_empty(axis);
+        rows(so_far, first, block[0], block[1], block[2]);
+      });
+  return empty;
 }
 
 void expect_flags(const H5File& f, const std::string& dataset, const std::vector<std::int32_t>& values) {
@@ -400,8 +412,9 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     if (!std::isfinite(s.time[k]) || (k > 0 && !(s.time[k] > s.time[k - 1])))
       bad(f, "/time", "row " + std::to_string(k) + ": times must be finite and increase");
   TubeDomains& d = s.domains;
+  bool streamed_empty = false;  // an empty interval in a tube handed over (parts.tube_rows)
   if (parts.tube_rows) {
-    read_bounds_streamed(f, "/tube", n, verified, r, parts.tube_rows);
+    streamed_empty = read_bounds_streamed(f, "/tube", n, verified, r, parts.tube_rows);
   } else if (parts.tube) {
     std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
     read_bounds(f, "/tube", tube, n, verified);
@@ -491,13 +504,8 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
       bad(f, "/", "attributes or dataset digests " + differ_from_recorded(*verified));
   }
   if (s.report.consistent) {
-    const auto any_empty = [](const std::vector<Interval>& v) {
-      for (const Interval& x : v)
-        if (x.is_empty()) return true;
-      return false;
-    };
     for (const auto* axis : {&d.px, &d.py, &d.pz, &d.dx, &d.dy, &d.dz})
-      if (any_empty(*axis)) bad(f, "/tube", "a consistent result with an empty domain (edited or damaged)");
+      if (streamed_empty || any_empty(*axis)) bad(f, "/tube", "a consistent result with an empty domain (edited or damaged)");
     for (const Vec3I& m : d.mines)
       for (int c = 0; c < 3; ++c)
         if (m[c].is_empty()) bad(f, "/mines", "a consistent result with an empty mine box (edited or damaged)");

@@ -61,9 +61,10 @@ struct ResultParts {
   bool increments = true;  // with the tube (warm starts)
   bool waterfall = true;
   /// When set, the tube's rows go there block by block, in order, instead of into the
-  /// result (without its increments): a tube of 10^7 steps is 480 MB. An error found
-  /// later (a digest, a row) is thrown after the blocks it covers were handed over, so
-  /// the receiver writes to a temporary output.
+  /// result, and `tube` and `increments` are ignored (no tube nor increments kept): a
+  /// tube of 10^7 steps is 480 MB. An error found later (a digest, a row, an empty
+  /// interval in a consistent result) is thrown after the blocks it covers were handed
+  /// over, so the receiver writes to a temporary output and discards it.
   TubeRows tube_rows = nullptr;
 };
 

@@ -57,10 +57,10 @@ int export_result(const po::variables_map& v, const std::string& format, const s
   const io::SolveResult r = io::read_result(path, {.tube = format == "geojson", .increments = false, .waterfall = false});
   if (!r.solution.report.consistent) progress.finish();  // before the refusal's line, or the notes below
   if (!accept_result_status(v, "export", path, r.solution.report.consistent)) return kExitInconsistent;
-  if (const std::string why = io::geodetic_problem(r.origin); !why.empty()) {
-    if (format == "geojson") throw UsageError(path + ": " + why);
-    std::fprintf(stderr, "%s\n", io::one_line("gesmi export: note: latitude/longitude columns left NaN: " + path + ": " + why).c_str());
-  }
+  // (the CSVs' note on NaN columns comes once they are written: a tube read again may
+  // still be refused)
+  const std::string geodetic_why = io::geodetic_problem(r.origin);
+  if (!geodetic_why.empty() && format == "geojson") throw UsageError(path + ": " + geodetic_why);
   std::optional<Mission> mission;
   if (v.count("mission")) {
     if (format != "geojson") throw UsageError("--mission: only the geojson format uses the mission (its GPS fixes)");
@@ -70,11 +70,14 @@ int export_result(const po::variables_map& v, const std::string& format, const s
                        " was solved from (its navigation digest differs)");
   }
   progress.update(-1.0, "writing " + output);
-  if (format == "tube-csv") io::write_tube_csv(path, output);
+  if (format == "tube-csv") io::write_tube_csv(path, r, output);
   if (format == "mines-csv") io::write_mines_csv(r, output);
   if (format == "geojson") io::write_geojson(r, mission ? &*mission : nullptr, output);
   outputs.commit();
   progress.finish();
+  if (!geodetic_why.empty())
+    std::fprintf(stderr, "%s\n",
+                 io::one_line("gesmi export: note: latitude/longitude columns left NaN: " + path + ": " + geodetic_why).c_str());
   CommandReport report("export", v);
   if (report.enabled()) {
     report.inputs(v, {"file", "mission"});

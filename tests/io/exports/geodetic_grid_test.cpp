@@ -122,6 +122,29 @@ TEST(GeodeticGrid, WideBoxesAcrossTheOriginsMeridianKeepTheLatitudeBulge) {
     }
 }
 
+TEST(GeodeticGrid, EveryTileNearTheOriginContainsItsPoints) {
+  // One point in each of the 160,801 tiles within 10 km of the origin (north and east),
+  // in tile order and then in a stride that revisits tiles: whatever the cache holds
+  // (corners of one tile may share its slots), each point lies inside its bounds.
+  const LocalFrame frame({48.0, -4.0});
+  GeodeticGrid grid(frame);
+  const auto contains = [&](double north, double east) {
+    const GeodeticBox box = grid.box(Interval(north), Interval(east));
+    const GeoOrigin g = geodetic_point(frame, north, east);
+    return g.latitude >= box.latitude_lo && g.latitude <= box.latitude_hi && g.longitude >= box.longitude_lo &&
+           g.longitude <= box.longitude_hi;
+  };
+  int outside = 0;
+  for (int i = -200; i <= 200; ++i)
+    for (int j = -200; j <= 200; ++j) outside += contains(kGeodeticPiece * (i + 0.2), kGeodeticPiece * (j + 0.2)) ? 0 : 1;
+  for (int s = 0; s < 20000; ++s) {
+    const int i = (s * 37) % 401 - 200, j = (s * 53) % 401 - 200;
+    outside += contains(kGeodeticPiece * (i + 0.7), kGeodeticPiece * (j + 0.4)) ? 0 : 1;
+  }
+  EXPECT_EQ(outside, 0);
+  EXPECT_TRUE(contains(7610.0, 6510.0));  // tile (152, 130): two corners share a slot
+}
+
 TEST(GeodeticGrid, BoxesSpanningManyTilesTakeTheEdgeWalk) {
   const LocalFrame frame({48.2129, -4.4582});
   GeodeticGrid grid(frame);

@@ -13,6 +13,7 @@
 
 #include "io/format_error.h"
 #include "io/files/mission_file.h"
+#include "io/exports/result_exports.h"
 #include "io/files/result_file.h"
 #include "tests/support/paths.h"
 #include "tests/support/run_command.h"
@@ -257,6 +258,16 @@ TEST(HostileHdf5, TheTubeCsvExportWritesNothingForAnEditedTube) {
     EXPECT_EQ(test::line_count(run.err), 1) << run.err;
     EXPECT_TRUE(test::names_in(folder).empty());
   }
+  // A result replaced between the export's two reads (the status check's and the
+  // streamed tube's) is refused.
+  const std::string replaced = test::temp_folder("tube-csv-replaced");
+  try {
+    write_tube_csv(result, read_result(samples().result, {.tube = false, .waterfall = false}), replaced + "/t.csv");
+    ADD_FAILURE() << "another result's rows were written";
+  } catch (const FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find(result + ": changed while it was exported"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(test::names_in(replaced).empty());
   // Unedited, it writes one row a sample.
   const std::string folder = test::temp_folder("tube-csv");
   ASSERT_EQ(test::run_gesmi({"export", result, "--format", "tube-csv", "-o", folder + "/t.csv"}).exit_code, 0);
@@ -315,6 +326,21 @@ TEST(HostileHdf5, ResultsOfEarlierVersionsAreReadButCheckedValueByValue) {
   };
   for (const Case& c : cases)
     expect_refused(samples().result, {(strip + c.edit).c_str(), c.must_name}, [](const std::string& p) { return read_result(p); });
+  // The same tube checks when the tube is handed over block by block (gesmi export
+  // --format tube-csv), which then writes no file.
+  const auto streamed = [](const std::string& p) {
+    const TubeRows ignore = [](const SolveResult&, std::size_t, std::span<const Interval>, std::span<const Interval>,
+                               std::span<const Interval>) {};
+    return read_result(p, {.waterfall = false, .tube_rows = ignore});
+  };
+  for (const Case& c : {cases[2], cases[3]}) {
+    expect_refused(samples().result, {(strip + c.edit).c_str(), c.must_name}, streamed);
+    const std::string path = edited(samples().result, strip + c.edit), folder = test::temp_folder("tube-csv-old");
+    const test::CommandResult run = test::run_gesmi({"export", path, "--format", "tube-csv", "-o", folder + "/t.csv"});
+    EXPECT_EQ(run.exit_code, 2) << c.edit;
+    EXPECT_NE(run.err.find(c.must_name), std::string::npos) << run.err;
+    EXPECT_TRUE(test::names_in(folder).empty());
+  }
 }
 
 // Results of formats 2 to 5 carry SHA-256 digests: one as gesmi 0.3.0 wrote it before
