@@ -12,12 +12,30 @@ namespace {
 constexpr double kDegree = 180.0 / std::numbers::pi;
 constexpr double kRoundingSlack = 1.0 + 1e-9;  // covers the doubles' rounding in the margins below
 
-}  // namespace
-
+// A margin in metres as degrees of latitude, and of longitude at latitudes up to
+// |max_latitude| degrees (both outward).
 double metres_as_latitude(double metres) { return metres / kWgs84SmallestRadius * kDegree * kRoundingSlack; }
 
 double metres_as_longitude(double metres, double max_latitude) {
   return metres / (kWgs84EquatorialRadius * std::cos(std::abs(max_latitude) / kDegree)) * kDegree * kRoundingSlack;
+}
+
+}  // namespace
+
+void extend(GeodeticBox& box, double latitude, double longitude) {
+  box.latitude_lo = std::min(box.latitude_lo, latitude);
+  box.latitude_hi = std::max(box.latitude_hi, latitude);
+  box.longitude_lo = std::min(box.longitude_lo, longitude);
+  box.longitude_hi = std::max(box.longitude_hi, longitude);
+}
+
+GeodeticBox widened(GeodeticBox box, double metres, double max_latitude) {
+  const double dlat = metres_as_latitude(metres), dlon = metres_as_longitude(metres, max_latitude);
+  box.latitude_lo -= dlat;
+  box.latitude_hi += dlat;
+  box.longitude_lo -= dlon;
+  box.longitude_hi += dlon;
+  return box;
 }
 
 double geodetic_curvature(double max_latitude) {
@@ -54,7 +72,7 @@ GeoOrigin geodetic_point(const LocalFrame& frame, double north, double east) {
 GeodeticBox geodetic_box(const LocalFrame& frame, const Interval& north, const Interval& east) {
   const double corners[5][2] = {{north.lo(), east.lo()}, {north.lo(), east.hi()}, {north.hi(), east.hi()},
                                 {north.hi(), east.lo()}, {north.lo(), east.lo()}};
-  GeodeticBox box{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  GeodeticBox box = kNoPoint;
   double longest_piece = 0;
   for (int side = 0; side < 4; ++side) {
     const double* a = corners[side];
@@ -65,22 +83,13 @@ GeodeticBox geodetic_box(const LocalFrame& frame, const Interval& north, const I
     for (int i = 0; i < pieces; ++i) {
       const double f = static_cast<double>(i) / pieces;
       const GeoOrigin g = geodetic_point(frame, a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]));
-      box.latitude_lo = std::min(box.latitude_lo, g.latitude);
-      box.latitude_hi = std::max(box.latitude_hi, g.latitude);
-      box.longitude_lo = std::min(box.longitude_lo, g.longitude);
-      box.longitude_hi = std::max(box.longitude_hi, g.longitude);
+      extend(box, g.latitude, g.longitude);
     }
   }
   // The latitude the margins are taken at: the box's farthest from the equator, plus
   // what the margin itself may add (well under a degree).
   const double latitude = std::min(std::max(std::abs(box.latitude_lo), std::abs(box.latitude_hi)) + 0.01, 89.9);
-  const double margin = geodetic_margin(longest_piece * kRoundingSlack, latitude);
-  const double dlat = metres_as_latitude(margin), dlon = metres_as_longitude(margin, latitude);
-  box.latitude_lo -= dlat;
-  box.latitude_hi += dlat;
-  box.longitude_lo -= dlon;
-  box.longitude_hi += dlon;
-  return box;
+  return widened(box, geodetic_margin(longest_piece * kRoundingSlack, latitude), latitude);
 }
 
 }  // namespace gesmi::io

@@ -11,6 +11,8 @@
 // below 1 cm). tests/io/geodetic_box_test.cpp checks the bounds against dense
 // sampling with GeographicLib.
 
+#include <cmath>
+
 #include "io/geodesy.h"
 #include "solver/interval/interval.h"
 
@@ -22,6 +24,13 @@ inline constexpr double kGeodeticPiece = 50.0;  // m: longest local segment betw
 struct GeodeticBox {
   double latitude_lo, latitude_hi, longitude_lo, longitude_hi;
 };
+/// The box extend() starts from: it holds no point.
+inline constexpr GeodeticBox kNoPoint{INFINITY, -INFINITY, INFINITY, -INFINITY};
+
+/// Grows the box to hold the point (degrees).
+void extend(GeodeticBox& box, double latitude, double longitude);
+/// The box widened on every side by `metres`, taken at latitudes up to |max_latitude|.
+GeodeticBox widened(GeodeticBox box, double metres, double max_latitude);
 
 /// K (1/m): the bound of the plane-to-geodetic map's second derivative along any
 /// straight local line, at latitudes up to |max_latitude| degrees.
@@ -30,11 +39,6 @@ double geodetic_curvature(double max_latitude);
 /// The widening (m) that covers the chord deviation of pieces up to `piece` metres
 /// long at latitudes up to |max_latitude| degrees, plus the conversion error.
 double geodetic_margin(double piece, double max_latitude);
-
-/// A margin in metres as degrees of latitude, and of longitude at latitudes up to
-/// |max_latitude| degrees (both outward).
-double metres_as_latitude(double metres);
-double metres_as_longitude(double metres, double max_latitude);
 
 /// Largest |latitude| (degrees) the geodetic exports accept for an origin: the
 /// longitude's scale grows without bound toward the poles.

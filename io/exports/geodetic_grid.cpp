@@ -49,7 +49,7 @@ GeodeticGrid::Node GeodeticGrid::node(std::int64_t i, std::int64_t j) {
 GeodeticBox GeodeticGrid::box(const Interval& north, const Interval& east) {
   if (!cuts_of(north.lo(), north.hi(), tile_, north_cuts_) || !cuts_of(east.lo(), east.hi(), tile_, east_cuts_))
     return geodetic_box(frame_, north, east);
-  GeodeticBox box{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  GeodeticBox box = kNoPoint;
   double farthest = 0.0;  // largest |latitude| of the tiles' corners
   for (const Cut& n : north_cuts_)
     for (const Cut& e : east_cuts_) {
@@ -63,22 +63,13 @@ GeodeticBox GeodeticGrid::box(const Interval& north, const Interval& east) {
       const double wa = (1 - u) * (1 - v), wb = u * (1 - v), wc = (1 - u) * v, wd = u * v;
       const double latitude = wa * a.latitude + wb * b.latitude + wc * c.latitude + wd * d.latitude;
       const double longitude = wa * a.longitude + wb * b.longitude + wc * c.longitude + wd * d.longitude;
-      box.latitude_lo = std::min(box.latitude_lo, latitude);
-      box.latitude_hi = std::max(box.latitude_hi, latitude);
-      box.longitude_lo = std::min(box.longitude_lo, longitude);
-      box.longitude_hi = std::max(box.longitude_hi, longitude);
+      extend(box, latitude, longitude);
       for (const Node* corner : {&a, &b, &c, &d}) farthest = std::max(farthest, std::abs(corner->latitude));
     }
   // The latitude the margins are taken at, as in geodetic_box(): the tiles' farthest
   // from the equator plus a slack above what a tile's interior may add.
   const double latitude = std::min(farthest + 0.01, 89.9);
-  const double margin = kLocalFrameError + tile_ * tile_ * geodetic_curvature(latitude) / 4.0;
-  const double dlat = metres_as_latitude(margin), dlon = metres_as_longitude(margin, latitude);
-  box.latitude_lo -= dlat;
-  box.latitude_hi += dlat;
-  box.longitude_lo -= dlon;
-  box.longitude_hi += dlon;
-  return box;
+  return widened(box, kLocalFrameError + tile_ * tile_ * geodetic_curvature(latitude) / 4.0, latitude);
 }
 
 }  // namespace gesmi::io
