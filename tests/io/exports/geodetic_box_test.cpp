@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tests/support/geodetic_sampling.h"
+
 namespace gesmi::io {
 namespace {
 
@@ -28,30 +30,7 @@ TEST_P(GeodeticBoxTest, ContainsEverySampledPointAndStaysTight) {
   const Interval north(c.north - c.size / 2, c.north + c.size / 2 * 0.7);
   const Interval east(c.east - c.size / 2 * 0.8, c.east + c.size / 2);
   const GeodeticBox box = geodetic_box(frame, north, east);
-  double lat_lo = INFINITY, lat_hi = -INFINITY, lon_lo = INFINITY, lon_hi = -INFINITY;
-  const auto sample = [&](double n, double e) {
-    const GeoOrigin g = geodetic_point(frame, n, e);
-    ASSERT_GE(g.latitude, box.latitude_lo) << n << ", " << e;
-    ASSERT_LE(g.latitude, box.latitude_hi) << n << ", " << e;
-    ASSERT_GE(g.longitude, box.longitude_lo) << n << ", " << e;
-    ASSERT_LE(g.longitude, box.longitude_hi) << n << ", " << e;
-    lat_lo = std::min(lat_lo, g.latitude);
-    lat_hi = std::max(lat_hi, g.latitude);
-    lon_lo = std::min(lon_lo, g.longitude);
-    lon_hi = std::max(lon_hi, g.longitude);
-  };
-  const int edge = 4000, grid = 40;
-  for (int i = 0; i <= edge; ++i) {
-    const double f = static_cast<double>(i) / edge;
-    const double n = north.lo() + f * north.width(), e = east.lo() + f * east.width();
-    sample(north.lo(), e);
-    sample(north.hi(), e);
-    sample(n, east.lo());
-    sample(n, east.hi());
-  }
-  for (int i = 0; i <= grid; ++i)
-    for (int j = 0; j <= grid; ++j)
-      sample(north.lo() + north.width() * i / grid, east.lo() + east.width() * j / grid);
+  const auto [lat_lo, lat_hi, lon_lo, lon_hi] = test::sample_inside(frame, north, east, box, 4000, 40);
   // Tight: the margins add at most a few centimetres beyond the sampled extremes.
   const double farthest = std::max(std::abs(lat_lo), std::abs(lat_hi));
   const double metre_lat = 1.0 / 110000.0, metre_lon = metre_lat / std::cos(farthest * M_PI / 180.0);

@@ -15,6 +15,8 @@
 #include <cmath>
 #include <random>
 
+#include "tests/support/geodetic_sampling.h"
+
 namespace gesmi::io {
 namespace {
 
@@ -23,37 +25,10 @@ struct Place {
   double north, east;  // where the boxes are (m from the origin)
 };
 
-struct Extremes {
-  double lat_lo = INFINITY, lat_hi = -INFINITY, lon_lo = INFINITY, lon_hi = -INFINITY;
-};
-
-// Samples the box's edges densely and its interior on a grid; every point must lie in
-// `bounds`. Returns the sampled extremes.
-Extremes sample_inside(const LocalFrame& frame, const Interval& north, const Interval& east, const GeodeticBox& bounds) {
-  Extremes x;
-  const auto sample = [&](double n, double e) {
-    const GeoOrigin g = geodetic_point(frame, n, e);
-    EXPECT_GE(g.latitude, bounds.latitude_lo) << n << ", " << e;
-    EXPECT_LE(g.latitude, bounds.latitude_hi) << n << ", " << e;
-    EXPECT_GE(g.longitude, bounds.longitude_lo) << n << ", " << e;
-    EXPECT_LE(g.longitude, bounds.longitude_hi) << n << ", " << e;
-    x.lat_lo = std::min(x.lat_lo, g.latitude);
-    x.lat_hi = std::max(x.lat_hi, g.latitude);
-    x.lon_lo = std::min(x.lon_lo, g.longitude);
-    x.lon_hi = std::max(x.lon_hi, g.longitude);
-  };
-  const int edge = 120, grid = 8;
-  for (int i = 0; i <= edge; ++i) {
-    const double f = static_cast<double>(i) / edge;
-    const double n = north.lo() + f * north.width(), e = east.lo() + f * east.width();
-    sample(north.lo(), e);
-    sample(north.hi(), e);
-    sample(n, east.lo());
-    sample(n, east.hi());
-  }
-  for (int i = 1; i < grid; ++i)
-    for (int j = 1; j < grid; ++j) sample(north.lo() + north.width() * i / grid, east.lo() + east.width() * j / grid);
-  return x;
+// The edges every 1/120 of their length and a 9 x 9 interior lattice.
+test::SampledExtremes sample_inside(const LocalFrame& frame, const Interval& north, const Interval& east,
+                                    const GeodeticBox& bounds) {
+  return test::sample_inside(frame, north, east, bounds, 120, 8);
 }
 
 // Random boxes around `place`: widths from 0 (a point) to 2.5 tiles, some with a side
@@ -79,7 +54,7 @@ TEST_P(GeodeticGridTest, ContainsEverySampledPointAndStaysTight) {
   GeodeticGrid grid(frame);
   for (const auto& [north, east] : random_boxes(place, kGeodeticPiece, 30, 1)) {
     const GeodeticBox box = grid.box(north, east);
-    const Extremes x = sample_inside(frame, north, east, box);
+    const test::SampledExtremes x = sample_inside(frame, north, east, box);
     // Tight: the margins (1 cm plus the interpolation's bound: 0.8 mm at 48 degrees,
     // 2.5 cm at 89) add at most a few centimetres beyond the sampled extremes.
     const double farthest = std::max(std::abs(x.lat_lo), std::abs(x.lat_hi));
