@@ -1,6 +1,5 @@
 #include "io/files/result_file.h"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -132,9 +131,9 @@ void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interv
 // whole copy of either (240 MB at 10^7 steps). Each block's intervals go to the three
 // arrays `into(first, count)` gives for its rows, then `done(first, count)` is called. A
 // changed digest is reported before a bad row (the row may be the edit): the first bad
-// row is kept until both are checked.
+// row is kept until both are checked. Returns whether some interval was empty.
 template <class Into, class Done>
-void read_bound_blocks(const H5File& f, const std::string& prefix, std::size_t n, std::optional<DigestKind> verified,
+bool read_bound_blocks(const H5File& f, const std::string& prefix, std::size_t n, std::optional<DigestKind> verified,
                        Into&& into, Done&& done) {
   H5File::RowBlocks lower(f, prefix + "/lower", 3), upper(f, prefix + "/upper", 3);
   for (const H5File::RowBlocks* bounds : {&lower, &upper})
@@ -147,6 +146,7 @@ void read_bound_blocks(const H5File& f, const std::string& prefix, std::size_t n
     upper_digest.emplace(prefix + "/upper", n, 3, *verified);
   }
   std::string first_bad_row;
+  bool any_empty = false;
   for (std::span<const double> lo_rows = lower.next(), hi_rows = upper.next(); !lo_rows.empty();
        lo_rows = lower.next(), hi_rows = upper.next()) {
     if (verified) {
@@ -158,6 +158,7 @@ void read_bound_blocks(const H5File& f, const std::string& prefix, std::size_t n
     for (std::size_t i = 0; i < lo_rows.size(); ++i) {
       const double lo = lo_rows[i], hi = hi_rows[i];
       const bool empty = std::isnan(lo) && std::isnan(hi);
+      any_empty = any_empty || empty;
       if (!empty && !(lo <= hi && lo < INFINITY && hi > -INFINITY) && first_bad_row.empty())
         first_bad_row = "row " + std::to_string(first + i / 3) + ": not an interval (lower " + format_number(lo) +
                         ", upper " + format_number(hi) + ")";
@@ -170,13 +171,14 @@ void read_bound_blocks(const H5File& f, const std::string& prefix, std::size_t n
     upper_digest->verify(f);
   }
   if (!first_bad_row.empty()) bad(f, prefix, first_bad_row);
+  return any_empty;
 }
 
-// read_bound_blocks() into three whole arrays.
-void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interval>* axes[3], std::size_t n,
+// read_bound_blocks() into three whole arrays; whether some interval was empty.
+bool read_bounds(const H5File& f, const std::string& prefix, std::vector<Interval>* axes[3], std::size_t n,
                  std::optional<DigestKind> verified) {
   for (std::size_t c = 0; c < 3; ++c) axes[c]->resize(n);
-  read_bound_blocks(
+  return read_bound_blocks(
       f, prefix, n, verified,
       [&](std::size_t first, std::size_t) {
         return std::array<Interval*, 3>{axes[0]->data() + first, axes[1]->data() + first, axes[2]->data() + first};
@@ -184,28 +186,18 @@ void read_bounds(const H5File& f, const std::string& prefix, std::vector<Interva
       [](std::size_t, std::size_t) {});
 }
 
-bool any_empty(std::span<const Interval> v) {
-  return std::any_of(v.begin(), v.end(), [](const Interval& x) { return x.is_empty(); });
-}
-
 // read_bound_blocks() handing each block to `rows` (ResultParts::tube_rows); whether
-// some interval was empty (read_result() checks that against the status, as for a
-// whole tube).
+// some interval was empty.
 bool read_bounds_streamed(const H5File& f, const std::string& prefix, std::size_t n, std::optional<DigestKind> verified,
                           const SolveResult& so_far, const TubeRows& rows) {
   std::vector<Interval> block[3];
-  bool empty = false;
-  read_bound_blocks(
+  return read_bound_blocks(
       f, prefix, n, verified,
       [&](std::size_t, std::size_t count) {
         for (std::vector<Interval>& axis : block) axis.resize(count);
         return std::array<Interval*, 3>{block[0].data(), block[1].data(), block[2].data()};
       },
-      [&](std::size_t first, std::size_t) {
-        for (const std::vector<Interval>& axis : block) empty = empty || any_empty(axis);
-        rows(so_far, first, block[0], block[1], block[2]);
-      });
-  return empty;
+      [&](std::size_t first, std::size_t) { rows(so_far, first, block[0], block[1], block[2]); });
 }
 
 void expect_flags(const H5File& f, const std::string& dataset, const std::vector<std::int32_t>& values) {
@@ -412,16 +404,16 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     if (!std::isfinite(s.time[k]) || (k > 0 && !(s.time[k] > s.time[k - 1])))
       bad(f, "/time", "row " + std::to_string(k) + ": times must be finite and increase");
   TubeDomains& d = s.domains;
-  bool streamed_empty = false;  // an empty interval in a tube handed over (parts.tube_rows)
+  bool empty_domain = false;  // in the tube or the increments, as read or handed over
   if (parts.tube_rows) {
-    streamed_empty = read_bounds_streamed(f, "/tube", n, verified, r, parts.tube_rows);
+    empty_domain = read_bounds_streamed(f, "/tube", n, verified, r, parts.tube_rows);
   } else if (parts.tube) {
     std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
-    read_bounds(f, "/tube", tube, n, verified);
+    empty_domain = read_bounds(f, "/tube", tube, n, verified);
   }
   if (parts.increments && parts.tube && !parts.tube_rows) {
     std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
-    read_bounds(f, "/increments", increments, n - 1, verified);
+    empty_domain = read_bounds(f, "/increments", increments, n - 1, verified) || empty_domain;
   }
   std::vector<Interval> mx, my, mz;
   std::vector<Interval>* mines[3] = {&mx, &my, &mz};
@@ -504,8 +496,7 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
       bad(f, "/", "attributes or dataset digests " + differ_from_recorded(*verified));
   }
   if (s.report.consistent) {
-    for (const auto* axis : {&d.px, &d.py, &d.pz, &d.dx, &d.dy, &d.dz})
-      if (streamed_empty || any_empty(*axis)) bad(f, "/tube", "a consistent result with an empty domain (edited or damaged)");
+    if (empty_domain) bad(f, "/tube", "a consistent result with an empty domain (edited or damaged)");
     for (const Vec3I& m : d.mines)
       for (int c = 0; c < 3; ++c)
         if (m[c].is_empty()) bad(f, "/mines", "a consistent result with an empty mine box (edited or damaged)");
