@@ -209,48 +209,67 @@ double farther(double a, double b) {
   return std::isnan(a) || std::isnan(b) ? std::numeric_limits<double>::quiet_NaN() : std::max(a, b);
 }
 
+// The margins at the farthest distance from the origin a sample can take, capped at the
+// zone's; where capped, the farthest such distance is kept in `beyond_zone`. Both
+// margins grow with the distance, so the distance is first rounded up to 11 significant
+// bits (at most 0.1 % farther): consecutive samples mostly share it, and the tangent in
+// the heading's bound is taken once per change.
+class MarginsAtDistance {
+ public:
+  explicit MarginsAtDistance(const Mission& mission)
+      : latitude_(mission.origin.latitude),
+        zone_heading_(mission.heading_frame_margin),
+        zone_scale_(mission.frame_scale_margin) {}
+  void take(double farthest, float& heading, float& scale, double& beyond_zone) {
+    const double distance = rounded_up_to_11_bits(farthest);
+    if (!(distance == last_)) {
+      const double h = meridian_convergence_within(latitude_, distance);
+      const double s = frame_scale_within(distance);
+      // (capped also when unbounded there: inf, NaN)
+      heading_ = float_up(h <= zone_heading_ ? h : zone_heading_);
+      scale_ = float_up(s <= zone_scale_ ? s : zone_scale_);
+      // (an unbounded box, inf or NaN, cannot show the robot stayed in the zone either)
+      beyond_ = !(h <= zone_heading_) || !(s <= zone_scale_);
+      last_ = distance;
+    }
+    heading = heading_;
+    scale = scale_;
+    if (beyond_) beyond_zone = std::isnan(distance) ? std::numeric_limits<double>::infinity() : std::max(beyond_zone, distance);
+  }
+
+ private:
+  double latitude_, zone_heading_, zone_scale_;
+  double last_ = std::numeric_limits<double>::quiet_NaN();
+  float heading_ = 0.0f, scale_ = 0.0f;
+  bool beyond_ = false;
+};
+
+// The farthest the robot can be from the origin during step k (from sample k to k + 1),
+// from the farthest it can be at either end: within the farther of its ends plus half
+// the step's travel (the robot is never farther than that from one of them).
+double step_reach(const Mission& mission, double speed, std::size_t k, double here, double next) {
+  const double half_travel = speed * (0.5 * (mission.time[k + 1] - mission.time[k]));
+  return (farther(here, next) + half_travel) * kUp;
+}
+
 // The margins of each sample from `reach` (the farthest the robot can be from the
-// origin at each sample's time): over each step, within the farther of its ends plus
-// half the step's travel (the robot is never farther than that from one of them);
-// capped at the zone's margins.
+// origin at each sample's time): each sample takes them once, at the farther of its two
+// steps' reach (NaN, from an empty box, gives the zone's).
 // `reach(k)` is called once per sample, in order.
 template <class Reach>
 FrameMarginValues margins_within(const Mission& mission, std::size_t n, Reach reach, double speed) {
-  const double zone_heading = mission.heading_frame_margin, zone_scale = mission.frame_scale_margin;
   FrameMarginValues v;
   v.heading.assign(n, 0.0f);
   v.scale.assign(n, 0.0f);
-  // Both margins grow with the distance, so the distance is first rounded up to 11
-  // significant bits (at most 0.1 % farther): consecutive samples mostly share it, and
-  // the tangent in the heading's bound is taken once per change.
-  double last = std::numeric_limits<double>::quiet_NaN();
-  float heading = 0.0f, scale = 0.0f;
-  const auto take = [&](std::size_t k, double farthest) {
-    const double distance = rounded_up_to_11_bits(farthest);
-    if (!(distance == last)) {
-      const double h = meridian_convergence_within(mission.origin.latitude, distance);
-      const double s = frame_scale_within(distance);
-      // (capped also when unbounded there: inf, NaN)
-      heading = float_up(h <= zone_heading ? h : zone_heading);
-      scale = float_up(s <= zone_scale ? s : zone_scale);
-      // (an unbounded box, inf or NaN, cannot show the robot stayed in the zone either)
-      if (!(h <= zone_heading) || !(s <= zone_scale))
-        v.beyond_zone = std::isnan(distance) ? std::numeric_limits<double>::infinity() : std::max(v.beyond_zone, distance);
-      last = distance;
-    }
-    v.heading[k] = heading;
-    v.scale[k] = scale;
-  };
+  MarginsAtDistance margins(mission);
+  const auto take = [&](std::size_t k, double farthest) { margins.take(farthest, v.heading[k], v.scale[k], v.beyond_zone); };
   if (n == 0) return v;
   double here = reach(0);
   if (n == 1) take(0, here * kUp);
-  // Each sample takes the margins once, at the farther of its two steps' farthest
-  // points (NaN, from an empty box, gives the zone's).
   double before = 0.0;  // the step ending at sample k
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const double next = reach(k + 1);
-    const double half_travel = speed * (0.5 * (mission.time[k + 1] - mission.time[k]));
-    const double after = (farther(here, next) + half_travel) * kUp;
+    const double after = step_reach(mission, speed, k, here, next);
     take(k, farther(before, after));
     before = after;
     here = next;
@@ -319,14 +338,59 @@ FrameMarginValues frame_margins_over(const Mission& mission, const TubeDomains& 
   return frame_margins_over(mission, tube, speed_bound(mission));
 }
 
+namespace {
+
+// The farthest distance from the origin within sample k's box of the tube.
+double tube_reach(const TubeDomains& tube, std::size_t k) {
+  const double north = tube.px[k].mag(), east = tube.py[k].mag();
+  return std::sqrt(north * north + east * east + std::numeric_limits<double>::min()) * kUp;
+}
+
+}  // namespace
+
 FrameMarginValues frame_margins_over(const Mission& mission, const TubeDomains& tube, double speed) {
   if (!has_frame_margins(mission)) return {};
-  // The farthest distance from the origin within sample k's box.
-  const auto reach = [&](std::size_t k) {
-    const double north = tube.px[k].mag(), east = tube.py[k].mag();
-    return std::sqrt(north * north + east * east + std::numeric_limits<double>::min()) * kUp;
+  return margins_within(mission, tube.size(), [&](std::size_t k) { return tube_reach(tube, k); }, speed);
+}
+
+FrameMarginValues zone_margin_values(const Mission& mission, std::size_t samples) {
+  if (!has_frame_margins(mission)) return {};
+  FrameMarginValues v;
+  // What a sample capped at the zone takes (MarginsAtDistance): no sample takes more.
+  v.heading.assign(samples, float_up(mission.heading_frame_margin));
+  v.scale.assign(samples, float_up(mission.frame_scale_margin));
+  return v;
+}
+
+void narrow_margins_over(FrameMarginValues& margins, const Mission& mission, const TubeDomains& tube, double speed,
+                         std::span<const unsigned char> wanted) {
+  const std::size_t n = tube.size();
+  if (!has_frame_margins(mission) || n == 0) return;
+  if (margins.heading.size() != n || margins.scale.size() != n || wanted.size() != n)
+    throw std::invalid_argument("narrow_margins_over: one margin and one flag per sample of the tube");
+  MarginsAtDistance at_distance(mission);
+  if (n == 1) {
+    if (wanted[0]) at_distance.take(tube_reach(tube, 0) * kUp, margins.heading[0], margins.scale[0], margins.beyond_zone);
+    return;
+  }
+  // Sample k's value in margins_within(): the farther of its two steps' reach. Along a
+  // run of wanted samples each step's reach is computed once.
+  const auto reach_of_step = [&](std::size_t j) {
+    return step_reach(mission, speed, j, tube_reach(tube, j), tube_reach(tube, j + 1));
   };
-  return margins_within(mission, tube.size(), reach, speed);
+  std::size_t known = n;  // the step whose reach `step_before` holds (n: none)
+  double step_before = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!wanted[k]) continue;
+    const double before = k == 0 ? 0.0 : (known == k - 1 ? step_before : reach_of_step(k - 1));
+    double farthest = before;
+    if (k + 1 < n) {
+      step_before = reach_of_step(k);
+      known = k;
+      farthest = farther(before, step_before);
+    }
+    at_distance.take(farthest, margins.heading[k], margins.scale[k], margins.beyond_zone);
+  }
 }
 
 FrameMarginValues frame_margins_from_fixes(const Mission& mission, double speed) {

@@ -105,6 +105,16 @@ void narrow_to_frame(TubeDomains& d, const SensorPriors& priors, const FrameMarg
 FrameMarginValues frame_margins_over(const Mission& mission, const TubeDomains& tube, double max_speed);
 FrameMarginValues frame_margins_over(const Mission& mission, const TubeDomains& tube);
 
+/// For a caller that reads the margins of a few samples only (the waterfall: the steps
+/// with a mine in reach): every sample at the zone's margins as stored, which no sample
+/// of frame_margins_over() exceeds; empty when the mission has no frame margins ...
+FrameMarginValues zone_margin_values(const Mission& mission, std::size_t samples);
+/// ... then at the samples `wanted` marks (one flag per sample of `tube`), the values
+/// frame_margins_over(mission, tube, max_speed) gives them, in place (a view of
+/// `margins` stays valid); beyond_zone over those samples only.
+void narrow_margins_over(FrameMarginValues& margins, const Mission& mission, const TubeDomains& tube, double max_speed,
+                         std::span<const unsigned char> wanted);
+
 /// Per-sample margins before any solve, from the GPS fixes alone: at time t the robot
 /// is at most max_speed |t - t_i| farther than the farthest point of fix i's box. For
 /// fixes that are true (not while some may be outliers). Empty when the mission has no

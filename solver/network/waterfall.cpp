@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "solver/mission/frame_scale.h"
+#include "solver/network/frame_margins.h"
 #include "solver/network/sensor_boxes.h"
 #include "solver/network/sonar_ranges.h"
 #include "solver/network/step_chunks.h"
@@ -57,9 +58,11 @@ double Waterfall::hi(std::size_t k, std::size_t i) const {
 Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, const TubeDomains& domains,
                             const WaterfallBefore* before, std::optional<double> max_speed,
                             const std::function<void(double)>& on_progress) {
-  // The tube holds the truth, so the frame's margins over it hold too.
-  const FrameMarginValues margins = max_speed ? frame_margins_over(mission, domains, *max_speed)
-                                              : frame_margins_over(mission, domains);
+  // The tube holds the truth, so the frame's margins over it hold too. They are needed
+  // only at the steps some mine is in reach of, found with the zone's margins first (no
+  // sample's exceed them, so no such step is missed), then narrowed there (in place:
+  // `boxes` reads them).
+  FrameMarginValues margins = zone_margin_values(mission, domains.size());
   const SensorBoxes boxes(mission, model, margins.view(mission));
   const std::size_t steps = domains.size(), mines = domains.mines.size();
   const SonarGeometry geometry{model.along_track_tolerance, model.mine_depth_band, model.sonar_max_range,
@@ -82,6 +85,28 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
       kernel_mines[i].hi[a] = domains.mines[i][a].hi();
     }
   }
+  // The frame's slack at step k, and the sonar's reach with it: the slack moves each axis
+  // of the offset, so the distance by at most sqrt(3) < 2 times it.
+  const auto slack_at = [&](std::size_t k) { return sonar_frame_slack(boxes.frame_scale(k), model.sonar_max_range); };
+  const auto reach_with = [&](double slack) { return add_up(model.sonar_max_range, 2.0 * slack); };
+  // Whether a mine's cell at a step is computed: not kept from `before`, and in reach.
+  const auto near = [&](std::size_t i, bool kept_step, const Vec3I& p, double reach) {
+    return !(kept_step && mine_kept[i]) && !boxes_beyond(p, domains.mines[i], reach);
+  };
+  // Per step: its cells kept from `before` (its positions unchanged), and some mine in
+  // reach under the zone's margins.
+  std::vector<unsigned char> kept_steps(steps, 0), in_reach(steps, 0);
+  const std::size_t chunks = step_chunk_count(steps);
+  for_step_chunks(steps, chunks, [&](std::size_t, std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) {
+      kept_steps[k] = any_kept && same_positions(domains, before->domains, k);
+      const Vec3I p = domains.position(k);
+      const double reach = reach_with(slack_at(k));
+      for (std::size_t i = 0; i < mines && !in_reach[k]; ++i) in_reach[k] = near(i, kept_steps[k], p, reach);
+    }
+  });
+  if (has_frame_margins(mission))
+    narrow_margins_over(margins, mission, domains, max_speed ? *max_speed : speed_bound(mission), in_reach);
   // The portable plane at step k, for what the kernel does not take.
   const auto plane_at = [&](std::size_t k) {
     SonarPlane plane;
@@ -93,7 +118,6 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
     return plane;
   };
   // Steps [first, last) of each chunk into their own part, joined in step order.
-  const std::size_t chunks = step_chunk_count(steps);
   std::vector<Waterfall> parts(chunks);
   const auto rows = [&](std::size_t chunk, std::size_t first, std::size_t last) {
     Waterfall& part = parts[chunk];
@@ -106,7 +130,7 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
     std::vector<KernelPair> pairs;
     std::vector<KernelCell> kernel_cells;
     std::vector<std::pair<std::size_t, std::size_t>> portable;  // (step, mine)
-    std::vector<std::size_t> near;
+    std::vector<std::size_t> near_mines;
     std::size_t earlier = any_kept ? before->waterfall.first_cell_at(first) : 0;
     for (std::size_t block = first; block < last; block += kBlock) {
       // The first chunk runs on the calling thread: it reports for all (they keep pace).
@@ -119,15 +143,8 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
       pairs.clear();
       portable.clear();
       for (std::size_t k = block; k < block_end; ++k) {
-        const Vec3I p = domains.position(k);
-        const bool kept_step = any_kept && same_positions(domains, before->domains, k);
+        const bool kept_step = kept_steps[k];
         Interval* row = cells.data() + (k - block) * mines;  // no cells without mines
-        near.clear();
-        const double slack = sonar_frame_slack(boxes.frame_scale(k), model.sonar_max_range);
-        // The slack moves each axis of the offset, so the distance by at most sqrt(3) < 2 times it.
-        const double reach = add_up(model.sonar_max_range, 2.0 * slack);
-        for (std::size_t i = 0; i < mines; ++i)
-          if (!(kept_step && mine_kept[i]) && !boxes_beyond(p, domains.mines[i], reach)) near.push_back(i);
         if (kept_step) {
           const Waterfall& w = before->waterfall;
           while (earlier < w.cells() && static_cast<std::size_t>(w.step[earlier]) < k) ++earlier;
@@ -135,7 +152,14 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
             if (mine_kept[static_cast<std::size_t>(w.mine[c])])
               row[static_cast<std::size_t>(w.mine[c])] = Interval(w.lower[c], w.upper[c]);
         }
-        if (near.empty()) continue;  // no attitude to build where no mine is in reach
+        if (!in_reach[k]) continue;
+        // Again with the step's own margins, narrowed above.
+        const Vec3I p = domains.position(k);
+        const double slack = slack_at(k), reach = reach_with(slack);
+        near_mines.clear();
+        for (std::size_t i = 0; i < mines; ++i)
+          if (near(i, kept_step, p, reach)) near_mines.push_back(i);
+        if (near_mines.empty()) continue;  // no attitude to build where no mine is in reach
         KernelStep step;
         const bool taken = prepare_kernel_step(p, boxes.roll(k), boxes.pitch(k), boxes.heading(k), boxes.altitude(k),
                                                slack, step);
@@ -143,7 +167,7 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
           kernel_steps.push_back(step);
           kernel_step_at.push_back(k - block);
         }
-        for (const std::size_t i : near) {
+        for (const std::size_t i : near_mines) {
           if (taken && mine_in_kernel[i])
             pairs.push_back({static_cast<std::uint32_t>(kernel_steps.size() - 1), static_cast<std::uint32_t>(i)});
           else

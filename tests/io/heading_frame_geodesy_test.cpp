@@ -54,27 +54,33 @@ TEST(HeadingFrameGeodesy, TheSolverUsesWgs84sSemiMajorAxis) {
   EXPECT_EQ(kWgs84SemiMajorAxis, GeographicLib::Constants::WGS84_a());
 }
 
+// n samples of a robot at 2.5 m/s anywhere within 90 km of `origin`, and a tube of
+// boxes up to 300 m wide around them (unbounded at every 50th sample from the 7th).
+void random_tube(const GeoOrigin& origin, std::mt19937_64& random, std::size_t n, Mission& m, TubeDomains& tube) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  m.origin = origin;
+  m.heading_frame_margin = meridian_convergence_within(origin.latitude, kLocalFrameZone);
+  m.frame_scale_margin = frame_scale_within(kLocalFrameZone);
+  double t = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    m.time.push_back(t);
+    t += 0.1 + 3.0 * unit(random);
+    for (auto* v : {&m.roll, &m.pitch, &m.heading, &m.vy, &m.vz, &m.altitude, &m.depth}) v->push_back(0.0);
+    m.vx.push_back(2.5);
+    const double azimuth = 2 * std::numbers::pi * unit(random), distance = 90000.0 * unit(random);
+    const double half = k % 50 == 7 ? INFINITY : 0.5 + 300.0 * unit(random) * unit(random);
+    tube.px.push_back(Interval::around(distance * std::cos(azimuth), half));
+    tube.py.push_back(Interval::around(distance * std::sin(azimuth), half));
+  }
+}
+
 TEST(HeadingFrameGeodesy, MarginsOverATubeHoldTheConvergenceWhereverTheRobotCanBe) {
   std::mt19937_64 random(5);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (const GeoOrigin& origin : kOrigins) {
     Mission m;
-    m.origin = origin;
-    m.heading_frame_margin = meridian_convergence_within(origin.latitude, kLocalFrameZone);
-    m.frame_scale_margin = frame_scale_within(kLocalFrameZone);
     TubeDomains tube;
     const std::size_t n = 300;
-    double t = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      m.time.push_back(t);
-      t += 0.1 + 3.0 * unit(random);
-      for (auto* v : {&m.roll, &m.pitch, &m.heading, &m.vy, &m.vz, &m.altitude, &m.depth}) v->push_back(0.0);
-      m.vx.push_back(2.5);
-      const double azimuth = 2 * std::numbers::pi * unit(random), distance = 90000.0 * unit(random);
-      const double half = k % 50 == 7 ? INFINITY : 0.5 + 300.0 * unit(random) * unit(random);
-      tube.px.push_back(Interval::around(distance * std::cos(azimuth), half));
-      tube.py.push_back(Interval::around(distance * std::sin(azimuth), half));
-    }
+    random_tube(origin, random, n, m, tube);
     const FrameMarginValues values = frame_margins_over(m, tube);
     const std::vector<float>& margins = values.heading;
     ASSERT_EQ(margins.size(), n);
@@ -120,6 +126,38 @@ TEST(HeadingFrameGeodesy, MarginsOverATubeHoldTheConvergenceWhereverTheRobotCanB
         EXPECT_LE(values.scale[k], 1.05 * scale_error_at(frame, std::min(r + 10.0, kLocalFrameZone), 0.0) + 1e-12)
             << origin.latitude << " sample " << k;
       }
+    }
+  }
+}
+
+// The waterfall takes the zone's margins everywhere, then the tube's at the samples it
+// reads: those must be frame_margins_over()'s, bit for bit, and no sample's may exceed
+// the zone's as stored (the waterfall finds the samples it reads with them).
+TEST(HeadingFrameGeodesy, MarginsNarrowedAtSomeSamplesAreTheTubesThereAndTheZonesElsewhere) {
+  std::mt19937_64 random(8);
+  std::bernoulli_distribution pick(0.2);
+  for (const GeoOrigin& origin : kOrigins) {
+    for (const std::size_t n : {std::size_t{1}, std::size_t{2}, std::size_t{300}}) {
+      Mission m;
+      TubeDomains tube;
+      random_tube(origin, random, n, m, tube);
+      const double speed = speed_bound(m);
+      const FrameMarginValues whole = frame_margins_over(m, tube, speed);
+      std::vector<unsigned char> wanted(n);
+      for (std::size_t k = 0; k < n; ++k) wanted[k] = k == 0 || k + 1 == n || pick(random);
+      FrameMarginValues some = zone_margin_values(m, n);
+      const FrameMarginValues zone = some;
+      narrow_margins_over(some, m, tube, speed, wanted);
+      ASSERT_EQ(some.heading.size(), n);
+      ASSERT_EQ(some.scale.size(), n);
+      for (std::size_t k = 0; k < n; ++k) {
+        SCOPED_TRACE(::testing::Message() << origin.latitude << " sample " << k << " of " << n);
+        ASSERT_LE(whole.heading[k], zone.heading[k]);
+        ASSERT_LE(whole.scale[k], zone.scale[k]);
+        EXPECT_EQ(some.heading[k], wanted[k] ? whole.heading[k] : zone.heading[k]);
+        EXPECT_EQ(some.scale[k], wanted[k] ? whole.scale[k] : zone.scale[k]);
+      }
+      EXPECT_LE(some.beyond_zone, whole.beyond_zone);
     }
   }
 }

@@ -209,6 +209,31 @@ TEST(WaterfallKernel, MissionWaterfallsAreThePortableOnes) {
     Mission wide = m;
     wide.model.heading = 0.06;
     expect_same(compute_waterfall(wide, wide.model, s.domains), portable_waterfall(wide, s.domains));
+    // Boxes of 20 cm around the truth: cells as far as the swath reaches, where the
+    // filter on the boxes' distance (with the zone's margins, then each step's own)
+    // decides which steps are computed.
+    TubeDomains tight = s.domains;
+    for (std::size_t k = 0; k < tight.size(); ++k) {
+      tight.px[k] = Interval::around(m.truth_x[k], 0.1);
+      tight.py[k] = Interval::around(m.truth_y[k], 0.1);
+      tight.pz[k] = Interval::around(m.truth_z[k], 0.1);
+    }
+    for (std::size_t i = 0; i < tight.mines.size(); ++i)
+      for (int c = 0; c < 3; ++c) tight.mines[i][c] = Interval::around(m.truth_mines[3 * i + static_cast<std::size_t>(c)], 0.1);
+    const Waterfall tight_kernel = compute_waterfall(m, m.model, tight);
+    double farthest = 0.0;
+    for (std::size_t c = 0; c < tight_kernel.cells(); ++c) farthest = std::max(farthest, tight_kernel.lower[c]);
+    EXPECT_GT(farthest, 0.85 * m.model.sonar_max_range);
+    expect_same(tight_kernel, portable_waterfall(m, tight));
+    // And a swath that ends just beyond where a mine passes (60.6 m off the track lines):
+    // its cells within a metre of the end.
+    Mission short_swath = m;
+    short_swath.model.sonar_max_range = 61.0;
+    const Waterfall edge = compute_waterfall(short_swath, short_swath.model, tight);
+    std::size_t near_the_end = 0;
+    for (std::size_t c = 0; c < edge.cells(); ++c) near_the_end += edge.lower[c] > 60.0;
+    EXPECT_GT(near_the_end, 10u);
+    expect_same(edge, portable_waterfall(short_swath, tight));
   }
 }
 
