@@ -135,16 +135,23 @@ TEST(HeadingFrameGeodesy, MarginsOverATubeHoldTheConvergenceWhereverTheRobotCanB
 // the zone's as stored (the waterfall finds the samples it reads with them).
 TEST(HeadingFrameGeodesy, MarginsNarrowedAtSomeSamplesAreTheTubesThereAndTheZonesElsewhere) {
   std::mt19937_64 random(8);
-  std::bernoulli_distribution pick(0.2);
+  std::bernoulli_distribution pick(0.5);
   for (const GeoOrigin& origin : kOrigins) {
-    for (const std::size_t n : {std::size_t{1}, std::size_t{2}, std::size_t{300}}) {
+    for (const std::size_t n : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{300}}) {
       Mission m;
       TubeDomains tube;
       random_tube(origin, random, n, m, tube);
+      // An empty box here and there (its distance is NaN: the zone's margins).
+      for (std::size_t k = 5; k < n; k += 97) tube.px[k] = Interval::empty();
       const double speed = speed_bound(m);
       const FrameMarginValues whole = frame_margins_over(m, tube, speed);
       std::vector<unsigned char> wanted(n);
-      for (std::size_t k = 0; k < n; ++k) wanted[k] = k == 0 || k + 1 == n || pick(random);
+      for (std::size_t k = 0; k < n; ++k) wanted[k] = pick(random);
+      FrameMarginValues all = zone_margin_values(m, n);
+      narrow_margins_over(all, m, tube, speed, std::vector<unsigned char>(n, 1));
+      EXPECT_EQ(all.heading, whole.heading);
+      EXPECT_EQ(all.scale, whole.scale);
+      EXPECT_EQ(all.beyond_zone, whole.beyond_zone);
       FrameMarginValues some = zone_margin_values(m, n);
       const FrameMarginValues zone = some;
       narrow_margins_over(some, m, tube, speed, wanted);

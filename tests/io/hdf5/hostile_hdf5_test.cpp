@@ -168,15 +168,22 @@ TEST(HostileHdf5, EditedResultsAreRefusedNamingWhatDiffers) {
   for (const Case& c : cases) expect_refused(samples().result, c, [](const std::string& p) { return read_result(p); });
 }
 
-// A result of more than two blocks of rows (H5File::kBlockRows), made once; empty when
-// it could not be made (each test that uses it then fails on its own).
-const std::string& three_block_result() {
-  static const std::string result = [] {
+// A result of more than two blocks of rows (H5File::kBlockRows), made once, or why it
+// could not be made (each test that uses it then fails on its own, saying so).
+struct MadeResult {
+  std::string path, failure;
+};
+const MadeResult& three_block_result() {
+  static const MadeResult result = [] {
     const std::string folder = test::temp_folder("hostile-blocks");
     const std::string mission = folder + "/m.h5", out = folder + "/r.h5";
-    const bool made = test::run_gesmi({"simulate", "--seed", "3", "--duration", "1800", "-o", mission}).exit_code == 0 &&
-                      test::run_gesmi({"solve", mission, "-o", out}).exit_code == 0;
-    return made ? out : std::string();
+    for (const std::vector<std::string>& command :
+         {std::vector<std::string>{"simulate", "--seed", "3", "--duration", "1800", "-o", mission},
+          std::vector<std::string>{"solve", mission, "-o", out}}) {
+      const int code = test::run_gesmi(command).exit_code;
+      if (code != 0) return MadeResult{"", "gesmi " + command[0] + " exited with " + std::to_string(code)};
+    }
+    return MadeResult{out, ""};
   }();
   return result;
 }
@@ -193,8 +200,8 @@ TEST(HostileHdf5, ABadRowInALaterBlockIsNamedOnceTheDigestsAreChecked) {
   // The tube and increments are read in blocks of H5File::kBlockRows rows, lower and
   // upper in step: a bad row in the third block is named by its row in the whole
   // dataset, and only once the digests are checked (the bad row may be the edit).
-  const std::string& result = three_block_result();
-  ASSERT_FALSE(result.empty()) << "gesmi simulate or solve failed to make the three-block result";
+  ASSERT_EQ(three_block_result().failure, "");
+  const std::string& result = three_block_result().path;
   ASSERT_GT(read_result(result).solution.time.size(), 2 * H5File::kBlockRows + 124);
   const std::string row = std::to_string(2 * H5File::kBlockRows + 123);
   const std::string cross = "lo = f['/tube/lower'][:]\nlo[" + row + ", 1] = 1e9\nf['/tube/lower'][:] = lo\n";
@@ -213,8 +220,8 @@ TEST(HostileHdf5, ABadRowInALaterBlockIsNamedOnceTheDigestsAreChecked) {
 }
 
 TEST(ResultTubeRows, AreTheWholeTubeInOrderBlockByBlock) {
-  const std::string& result = three_block_result();
-  ASSERT_FALSE(result.empty()) << "gesmi simulate or solve failed to make the three-block result";
+  ASSERT_EQ(three_block_result().failure, "");
+  const std::string& result = three_block_result().path;
   const TubeDomains whole = read_result(result, {.waterfall = false}).solution.domains;
   std::size_t next = 0, blocks = 0;
   const auto rows = [&](const SolveResult& so_far, std::size_t first, std::span<const Interval> x,
@@ -241,8 +248,8 @@ TEST(HostileHdf5, TheTubeCsvExportWritesNothingForAnEditedTube) {
   // `gesmi export --format tube-csv` writes its rows as the tube's blocks arrive: a
   // changed digest found after two blocks were written still leaves no file. (A
   // recomputed dataset digest changes the root digest, which the export checks first.)
-  const std::string& result = three_block_result();
-  ASSERT_FALSE(result.empty()) << "gesmi simulate or solve failed to make the three-block result";
+  ASSERT_EQ(three_block_result().failure, "");
+  const std::string& result = three_block_result().path;
   const std::string row = std::to_string(2 * H5File::kBlockRows + 123);
   const std::string cross = "hi = f['/tube/upper'][:]\nhi[" + row + ", 0] = -1e9\nf['/tube/upper'][:] = hi\n";
   const std::string cross_redigested = cross + redigest("/tube/upper");

@@ -195,7 +195,10 @@ TEST(WaterfallKernel, MissionWaterfallsAreThePortableOnes) {
     o.duration = 1500.0;
     o.missed = 0.3;
     Mission m = simulate_mission(o);
-    if (seed == 3) m.heading_frame_margin = 1e-3;  // per-sample margins over the tube
+    if (seed == 3) {  // per-sample margins over the tube, the scale's moving the sonar's reach
+      m.heading_frame_margin = 1e-3;
+      m.frame_scale_margin = 1e-3;
+    }
     const MissionSolution s = solve_mission(m);
     ASSERT_TRUE(s.report.consistent);
     const Waterfall kernel = compute_waterfall(m, m.model, s.domains);
@@ -210,8 +213,8 @@ TEST(WaterfallKernel, MissionWaterfallsAreThePortableOnes) {
     wide.model.heading = 0.06;
     expect_same(compute_waterfall(wide, wide.model, s.domains), portable_waterfall(wide, s.domains));
     // Boxes of 20 cm around the truth: cells as far as the swath reaches, where the
-    // filter on the boxes' distance (with the zone's margins, then each step's own)
-    // decides which steps are computed.
+    // filter on the boxes' distance decides which steps are computed (seed 3: with the
+    // zone's margins, then each step's own).
     TubeDomains tight = s.domains;
     for (std::size_t k = 0; k < tight.size(); ++k) {
       tight.px[k] = Interval::around(m.truth_x[k], 0.1);
