@@ -237,6 +237,12 @@ TEST(WaterfallKernel, MissionWaterfallsAreThePortableOnes) {
     for (std::size_t c = 0; c < edge.cells(); ++c) near_the_end += edge.lower[c] > 60.0;
     EXPECT_GT(near_the_end, 10u);
     expect_same(edge, portable_waterfall(short_swath, tight));
+    // Each mine alone, so that no other mine's reach marks its steps.
+    for (std::size_t i = 0; i < tight.mines.size(); ++i) {
+      TubeDomains alone = tight;
+      alone.mines = {tight.mines[i]};
+      expect_same(compute_waterfall(short_swath, short_swath.model, alone), portable_waterfall(short_swath, alone));
+    }
   }
 }
 
