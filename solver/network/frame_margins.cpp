@@ -252,18 +252,18 @@ double step_reach(const Mission& mission, double speed, std::size_t k, double he
   return (farther(here, next) + half_travel) * kUp;
 }
 
-// The margins of each sample from `reach` (the farthest the robot can be from the
-// origin at each sample's time): each sample takes them once, at the farther of its two
-// steps' reach (NaN, from an empty box, gives the zone's).
-// `reach(k)` is called once per sample, in order.
-template <class Reach>
-FrameMarginValues margins_within(const Mission& mission, std::size_t n, Reach reach, double speed) {
-  FrameMarginValues v;
-  v.heading.assign(n, 0.0f);
-  v.scale.assign(n, 0.0f);
+// The margins of the samples `wanted(k)` accepts, into v (one value per sample), from
+// `reach` (the farthest the robot can be from the origin at each sample's time): each
+// sample takes them once, at the farther of its two steps' reach (NaN, from an empty
+// box, gives the zone's). `reach(k)` is called once per sample, in order.
+template <class Reach, class Wanted>
+void margins_within(const Mission& mission, std::size_t n, Reach reach, double speed, Wanted wanted,
+                    FrameMarginValues& v) {
   MarginsAtDistance margins(mission);
-  const auto take = [&](std::size_t k, double farthest) { margins.take(farthest, v.heading[k], v.scale[k], v.beyond_zone); };
-  if (n == 0) return v;
+  const auto take = [&](std::size_t k, double farthest) {
+    if (wanted(k)) margins.take(farthest, v.heading[k], v.scale[k], v.beyond_zone);
+  };
+  if (n == 0) return;
   double here = reach(0);
   if (n == 1) take(0, here * kUp);
   double before = 0.0;  // the step ending at sample k
@@ -275,6 +275,15 @@ FrameMarginValues margins_within(const Mission& mission, std::size_t n, Reach re
     here = next;
   }
   if (n > 1) take(n - 1, before);
+}
+
+// Every sample's margins.
+template <class Reach>
+FrameMarginValues margins_within(const Mission& mission, std::size_t n, Reach reach, double speed) {
+  FrameMarginValues v;
+  v.heading.assign(n, 0.0f);
+  v.scale.assign(n, 0.0f);
+  margins_within(mission, n, reach, speed, [](std::size_t) { return true; }, v);
   return v;
 }
 
@@ -368,29 +377,8 @@ void narrow_margins_over(FrameMarginValues& margins, const Mission& mission, con
   if (!has_frame_margins(mission) || n == 0) return;
   if (margins.heading.size() != n || margins.scale.size() != n || wanted.size() != n)
     throw std::invalid_argument("narrow_margins_over: one margin and one flag per sample of the tube");
-  MarginsAtDistance at_distance(mission);
-  if (n == 1) {
-    if (wanted[0]) at_distance.take(tube_reach(tube, 0) * kUp, margins.heading[0], margins.scale[0], margins.beyond_zone);
-    return;
-  }
-  // Sample k's value in margins_within(): the farther of its two steps' reach. Along a
-  // run of wanted samples each step's reach is computed once.
-  const auto reach_of_step = [&](std::size_t j) {
-    return step_reach(mission, speed, j, tube_reach(tube, j), tube_reach(tube, j + 1));
-  };
-  std::size_t known = n;  // the step whose reach `step_before` holds (n: none)
-  double step_before = 0.0;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!wanted[k]) continue;
-    const double before = k == 0 ? 0.0 : (known == k - 1 ? step_before : reach_of_step(k - 1));
-    double farthest = before;
-    if (k + 1 < n) {
-      step_before = reach_of_step(k);
-      known = k;
-      farthest = farther(before, step_before);
-    }
-    at_distance.take(farthest, margins.heading[k], margins.scale[k], margins.beyond_zone);
-  }
+  margins_within(mission, n, [&](std::size_t k) { return tube_reach(tube, k); }, speed,
+                 [&](std::size_t k) { return wanted[k] != 0; }, margins);
 }
 
 FrameMarginValues frame_margins_from_fixes(const Mission& mission, double speed) {
