@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace gesmi {
 namespace {
@@ -45,6 +46,16 @@ ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, double prior_info)
       step_info_(n > 0 ? n - 1 : 0, Mat3::Zero()),
       d_(MatX::Identity(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)) * prior_info),
       eta_m_(VecX::Zero(static_cast<Eigen::Index>(q))) {}
+
+ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, std::vector<Mat3> step_information, double prior_info)
+    : n_(n), q_(q), prior_info_(prior_info), diag_(9 * n, 0.0), eta_(n, Vec3::Zero()),
+      step_info_(std::move(step_information)),
+      d_(MatX::Identity(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)) * prior_info),
+      eta_m_(VecX::Zero(static_cast<Eigen::Index>(q))),
+      steps_(Steps::kept) {
+  if (step_info_.size() != (n > 0 ? n - 1 : 0))
+    throw std::invalid_argument("ArrowheadChain: one step information per step (n - 1)");
+}
 
 void ArrowheadChain::reset() {
   step_info_.assign(n_ > 0 ? n_ - 1 : 0, Mat3::Zero());  // (released after a last solve)

@@ -26,6 +26,11 @@ class ArrowheadChain {
   /// n positions, q static unknowns (with a weak prior of information prior_info on
   /// each, so that unknowns no factor reaches stay finite).
   ArrowheadChain(std::size_t n, std::size_t q, double prior_info = 1e-12);
+  /// The same with the steps' information W_k (n - 1 of them, std::invalid_argument
+  /// otherwise) given, as kept by reset_keeping_steps() after add_step(k, W_k, ...) for
+  /// every k: the next call is reset_keeping_steps(). For an odometry computed before
+  /// the chain's other blocks are allocated (what kalman_smooth() releases in between).
+  ArrowheadChain(std::size_t n, std::size_t q, std::vector<Mat3> step_information, double prior_info = 1e-12);
 
   /// Removes every factor, keeping the memory: a relinearised system is built again in
   /// the same buffers (at 10^7 steps, reallocating them cost more than the solve). The

@@ -3,18 +3,24 @@
 #include <algorithm>
 #include <Eigen/LU>
 #include <cmath>
+#include <stdexcept>
 
 #include "solver/model/euler.h"
 
 namespace gesmi {
 namespace {
 
-// The rotation at sample k with the heading corrected by the heading bias.
-Mat3d rotation(const Mission& m, std::size_t k, double heading_bias) {
-  const Attitude<double> a = make_attitude(m.roll[k], m.pitch[k], m.heading[k] - heading_bias);
+// The rotation at these angles with the heading corrected by the heading bias.
+Mat3d rotation(double roll, double pitch, double heading, double heading_bias) {
+  const Attitude<double> a = make_attitude(roll, pitch, heading - heading_bias);
   Mat3d r;
   for (int c = 0; c < 3; ++c) r.col(c) = body_to_world(a, Vec3d(Vec3d::Unit(c)));
   return r;
+}
+
+// The rotation at sample k.
+Mat3d rotation(const Mission& m, std::size_t k, double heading_bias) {
+  return rotation(m.roll[k], m.pitch[k], m.heading[k], heading_bias);
 }
 
 // d/dpsi Rz(psi) = S Rz(psi): the heading's derivative of a world vector w is S w.
@@ -45,6 +51,19 @@ BiasVec bias_prior_sigma(const SensorModel& model, double f) {
   sigma[bias_depth_scale] = std::sqrt(uniform_variance(model.depth_relative, f));
   sigma[bias_depth_offset] = std::sqrt(uniform_variance(model.depth_absolute, f));
   return sigma;
+}
+
+std::vector<MarkSample> mark_samples(const Mission& m) {
+  for (const std::vector<double>* v : {&m.roll, &m.pitch, &m.heading, &m.altitude})
+    if (v->size() != m.size() && m.mark_count() > 0)
+      throw std::logic_error("mark_samples: the mission's attitude or altitude were released (MissionReadings)");
+  std::vector<MarkSample> samples;
+  samples.reserve(m.mark_count());
+  for (std::size_t j = 0; j < m.mark_count(); ++j) {
+    const std::size_t k = step_at(m, m.mark_time[j]);
+    samples.push_back({m.roll[k], m.pitch[k], m.heading[k], m.altitude[k]});
+  }
+  return samples;
 }
 
 std::size_t step_at(const Mission& m, double time) {
@@ -117,14 +136,19 @@ void linearise_measurements(const Mission& m, const SensorModel& model, std::spa
   const double var_range = uniform_variance(model.mark_range, f);
   const double var_along = uniform_variance(model.along_track_tolerance, f);
   const double var_mine_depth = f * (model.altitude * model.altitude + model.mine_depth_band * model.mine_depth_band) / 3.0;
+  const std::vector<MarkSample> read_here = o.marks.empty() ? mark_samples(m) : std::vector<MarkSample>();
+  const std::span<const MarkSample> marks = o.marks.empty() ? std::span<const MarkSample>(read_here) : o.marks;
+  if (marks.size() != m.mark_count())
+    throw std::invalid_argument("linearise_measurements: one kept sample per mark is needed (mark_samples())");
   for (std::size_t j = 0; j < m.mark_count(); ++j) {
     const int i = m.mark_mine[j];
     if (i < 0) continue;  // the smoother needs the association
     const std::size_t k = step_at(m, m.mark_time[j]);
-    const Mat3d r = rotation(m, k, heading_bias);
+    const MarkSample& sample = marks[j];
+    const Mat3d r = rotation(sample.roll, sample.pitch, sample.heading, heading_bias);
     const auto mi = static_cast<std::size_t>(i);
     if (!lin.mine_known[mi]) {
-      const double h = m.altitude[k];
+      const double h = sample.altitude;
       const double across = std::sqrt(std::max(m.mark_range[j] * m.mark_range[j] - h * h, 0.0));
       const Vec3d mine_body(0.0, m.mark_side[j] > 0 ? across : -across, h);
       lin.mine[mi] = lin.position[k] + r * mine_body;
@@ -142,7 +166,7 @@ void linearise_measurements(const Mission& m, const SensorModel& model, std::spa
     sink.scalar(k, ir.transpose(), i, -ir.transpose(), plane_bias, plane_bias[bias_heading] * heading_bias,
                 1.0 / var_along, &source);
     // Mine depth: m_z - p_z = altitude + s.
-    sink.scalar(k, -ez, i, ez, BiasRow::Zero(), m.altitude[k], 1.0 / var_mine_depth, &source);
+    sink.scalar(k, -ez, i, ez, BiasRow::Zero(), sample.altitude, 1.0 / var_mine_depth, &source);
   }
 }
 

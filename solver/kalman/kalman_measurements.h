@@ -95,10 +95,22 @@ enum class FactorSet {
   without_odometry,  // the scalar measurements alone (an odometry kept from an earlier pass)
 };
 
+/// What the detections read of the navigation: the attitude and altitude at a mark's
+/// step (step_at() of its time).
+struct MarkSample {
+  double roll = 0.0, pitch = 0.0, heading = 0.0, altitude = 0.0;
+};
+/// One per mark of the mission, in table order (the mission's attitude and altitude
+/// must be there).
+std::vector<MarkSample> mark_samples(const Mission& mission);
+
 struct MeasurementOptions {
   double noise_factor = 1.0;
   bool biases = false;  // compute the bias terms (zero otherwise)
   FactorSet factors = FactorSet::all;
+  /// The marks' samples kept aside (mark_samples()) when the mission's attitude and
+  /// altitude were released; empty: read from the mission.
+  std::span<const MarkSample> marks{};
 };
 
 /// Generates the factors at `lin`; places a mine not yet placed at its first

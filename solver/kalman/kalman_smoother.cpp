@@ -61,17 +61,32 @@ std::string KalmanOptions::validate() const {
   return {};
 }
 
-KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span<const PositionFix> fixes,
-                           const KalmanOptions& o) {
+namespace {
+
+// What the passes of a smoothing with its odometry kept do not read: the DVL, the
+// attitude and the altitude (the marks' samples are kept aside), and every per-sample
+// half-width (the smoother takes the model's bounds). 56 bytes a step, 120 with
+// half-widths; the time and depth stay.
+void release_after_dead_reckoning(Mission& m) {
+  NavHalfWidths& h = m.half_widths;
+  for (std::vector<double>* v : {&m.vx, &m.vy, &m.vz, &m.roll, &m.pitch, &m.heading, &m.altitude, &h.roll, &h.pitch,
+                                 &h.heading, &h.vx, &h.vy, &h.vz, &h.depth, &h.altitude})
+    std::vector<double>().swap(*v);  // (clear() would keep the memory)
+}
+
+// `releasable`: the mission itself when its caller gave up its readings, else null.
+KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const PositionFix> fixes,
+                    const KalmanOptions& o, Mission* releasable) {
+  if (readings_released(m)) throw std::logic_error("kalman_smooth: the mission's readings were released (MissionReadings)");
   const std::size_t n = m.size(), k_mines = static_cast<std::size_t>(m.mine_count);
   const std::size_t q = 3 * k_mines + (o.biases ? kBiasCount : 0);
-  ArrowheadChain chain(n, q);  // one set of buffers for every linearisation
   // Without biases the odometry does not depend on the linearisation point: the dead
-  // reckoning computes its factors once (the information in the chain, the deltas
+  // reckoning computes its factors once (the information for the chain, the deltas
   // here) and every pass adds them again (four fifths of the rotations of a
   // three-pass smoothing saved).
   const bool fixed_odometry = !o.biases;
   std::vector<Vec3d> odometry_delta;
+  std::vector<Mat3d> step_information;
   // First linearisation: dead reckoning from the first fix (or the origin), biases zero.
   KalmanLinearisation lin;
   lin.position.assign(n, Vec3d::Zero());
@@ -82,27 +97,37 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     lin.position[0] = p;
     struct DeadReckoning final : MeasurementSink {
       FlatPoints& position;
-      ArrowheadChain* kept_in;  // the chain that keeps the odometry, if it is fixed
+      bool keeps;  // the odometry is fixed: its factors are kept
+      std::vector<Mat3d>& information_kept;
       std::vector<Vec3d>& delta;
-      DeadReckoning(FlatPoints& p, ArrowheadChain* chain, std::vector<Vec3d>& d)
-          : position(p), kept_in(chain), delta(d) {}
+      DeadReckoning(FlatPoints& p, bool keep, std::vector<Mat3d>& w, std::vector<Vec3d>& d)
+          : position(p), keeps(keep), information_kept(w), delta(d) {}
       void odometry(std::size_t k, const Mat3d& information, const Vec3d& step, const BiasJacobian&) override {
         position[k + 1] = position[k] + step;
-        if (!kept_in) return;
+        if (!keeps) return;
         if (delta.size() != k) throw std::logic_error("kalman_smooth: the odometry steps came out of order");
-        kept_in->add_step(k, information, step);
+        // (as ArrowheadChain::add_step accumulates it on a zero block: the same bits)
+        information_kept.push_back(Mat3d::Zero() + information);
         delta.push_back(step);
       }
       void scalar(std::size_t, const Eigen::RowVector3d&, int, const Eigen::RowVector3d&, const BiasRow&, double, double,
                   const ConstraintRef*) override {}
-    } dead_reckoning(lin.position, fixed_odometry ? &chain : nullptr, odometry_delta);
-    if (fixed_odometry) odometry_delta.reserve(n - 1);
+    } dead_reckoning(lin.position, fixed_odometry, step_information, odometry_delta);
+    if (fixed_odometry) {
+      odometry_delta.reserve(n - 1);
+      step_information.reserve(n - 1);
+    }
     lin.mine.assign(k_mines, Vec3d::Zero());
     lin.mine_known.assign(k_mines, 0);
     linearise_measurements(m, model, {}, {o.noise_factor, false, FactorSet::odometry}, lin, dead_reckoning);
   }
   lin.mine.assign(k_mines, Vec3d::Zero());  // placed at their first detection in the first pass
   lin.mine_known.assign(k_mines, 0);
+  // Released before the chain's blocks are allocated: those reuse their memory.
+  const std::vector<MarkSample> marks = mark_samples(m);
+  if (releasable && fixed_odometry) release_after_dead_reckoning(*releasable);
+  // One set of buffers for every linearisation.
+  ArrowheadChain chain = fixed_odometry ? ArrowheadChain(n, q, std::move(step_information)) : ArrowheadChain(n, q);
 
   KalmanResult result;
   result.steps = n;
@@ -113,7 +138,7 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
   result.mine_covariance.assign(9 * k_mines, nan);
   if (o.max_iterations < 1 || n == 0) return result;  // nothing solved (validate() refuses such options)
   const MeasurementOptions measurements{o.noise_factor, o.biases,
-                                        fixed_odometry ? FactorSet::without_odometry : FactorSet::all};
+                                        fixed_odometry ? FactorSet::without_odometry : FactorSet::all, marks};
   const BiasVec prior_sigma = o.biases ? bias_prior_sigma(model, o.noise_factor) : BiasVec::Zero();
   chain.keep_cross_covariance_at(tested_steps(m, fixes));
   if (o.biases) chain.keep_cross_covariance_columns(3 * k_mines, kBiasCount);
@@ -238,6 +263,18 @@ KalmanResult kalman_smooth(const Mission& m, const SensorModel& model, std::span
     }
   }
   return result;
+}
+
+}  // namespace
+
+KalmanResult kalman_smooth(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
+                           const KalmanOptions& options) {
+  return smooth(mission, model, fixes, options, nullptr);
+}
+
+KalmanResult kalman_smooth(Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
+                           const KalmanOptions& options, MissionReadings readings) {
+  return smooth(mission, model, fixes, options, readings == MissionReadings::released_after_use ? &mission : nullptr);
 }
 
 Containment three_sigma_containment(const KalmanResult& r, const Mission& m) {

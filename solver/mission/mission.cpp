@@ -46,7 +46,7 @@ std::array<std::vector<double>*, 8> released_readings(Mission& m) {
 
 bool readings_released(const Mission& m) {
   // (the half-widths may be absent: the readings themselves say it)
-  for (const std::vector<double>* v : {&m.vx, &m.vy, &m.vz, &m.depth})
+  for (const std::vector<double>* v : {&m.vx, &m.vy, &m.vz, &m.depth, &m.roll, &m.pitch, &m.heading, &m.altitude})
     if (v->size() != m.size()) return true;
   return false;
 }

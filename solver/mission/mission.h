@@ -1,8 +1,8 @@
 #pragma once
 // A mission's measurements as flat arrays on one time grid (structure of arrays).
 // Built and validated by io/ (and by the simulator); solver/ only reads it, but for
-// the readings a solve may release when its caller gives them up (MissionReadings,
-// solver/solve/solve_mission.h; readings_released() below).
+// the readings a solve or the smoother may release when its caller gives them up
+// (MissionReadings and readings_released() below).
 //
 // Invariants (checked by io/ before a Mission reaches the solver):
 //  - nav arrays all have the length of `time`, which is strictly increasing (but the
@@ -137,10 +137,20 @@ struct Mission {
   bool has_truth() const { return !truth_x.empty(); }
 };
 
-/// The readings a solve releases when its caller gives them up (MissionReadings,
+/// What a computation given a mission it may change does with the mission's readings:
+/// keeps them, or empties those it no longer reads once it has used them, so that the
+/// rest of it does not hold them (the peak memory of a caller done with them, such as
+/// the gesmi command). Which ones: solve_mission() and kalman_smooth() each say.
+enum class MissionReadings {
+  kept,
+  released_after_use,
+};
+
+/// The readings a solve releases when its caller gives them up (solve_mission(),
 /// solver/solve/solve_mission.h): vx, vy, vz, depth and their per-sample half-widths.
 std::array<std::vector<double>*, 8> released_readings(Mission& mission);
-/// Whether the mission lacks them (released and not put back).
+/// Whether the mission lacks some navigation readings (released by a solve or the
+/// smoother, and not put back).
 bool readings_released(const Mission& mission);
 
 }  // namespace gesmi

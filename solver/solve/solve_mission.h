@@ -44,17 +44,12 @@ struct SolveOptions {
 
 MissionSolution solve_mission(const Mission& mission, const SolveOptions& options = {});
 
-/// What the solve may do with the mission's readings.
-enum class MissionReadings {
-  kept,
-  /// The DVL and depth readings and their per-sample half-widths (released_readings(),
-  /// 32 bytes a step, 64 with half-widths) are emptied once the sensor enclosures are
-  /// built, so that the passes do not hold them; the networks keep the few DVL samples
-  /// they read (DvlExcerpt). For a caller done with them (gesmi solve; its peak
-  /// memory). A cold inconsistent solve is then not diagnosed (report.diagnosis_pending):
-  /// the caller puts the readings back (read again) and calls diagnose_inconsistency().
-  released_after_use,
-};
+/// MissionReadings::released_after_use (mission.h): the DVL and depth readings and
+/// their per-sample half-widths (released_readings(), 32 bytes a step, 64 with
+/// half-widths) are emptied once the sensor enclosures are built, so that the passes do
+/// not hold them; the networks keep the few DVL samples they read (DvlExcerpt). A cold
+/// inconsistent solve is then not diagnosed (report.diagnosis_pending): the caller puts
+/// the readings back (read again) and calls diagnose_inconsistency().
 MissionSolution solve_mission(Mission& mission, const SolveOptions& options, MissionReadings readings);
 
 /// The diagnosis of a solve left pending (report.diagnosis_pending): the single marks

@@ -6,10 +6,16 @@ Markdown table. Missions: the reference-like one (59,995 steps) and, with --size
 10^6 and 10^7 steps (the survey repeated).
 
     tools/bench/whole_process.py [--gesmi build/bin/gesmi] [--runs 5] [--sizes ref 1e6 1e7]
-                                 [--only solve warm ...] [--skip NAME ...] [--keep DIR]
+                                 [--big-runs 1] [--only solve warm ...] [--skip NAME ...]
+                                 [--keep DIR] [--vs OTHER/gesmi]
 
 The operator iteration is `marks add` + `solve --from` + `waterfall` + `candidates`
 after one missed mark is found (the simulator's first missed mark, its true range).
+
+--vs compares two builds on a shared machine, whose speed drifts between minutes: each
+command of the two is run in turn (A B A B ..., after one pair not counted), each in its
+own folder on the same mission, and the ratio A/B of each pair's CPU time is printed
+with the medians (its median, then its range: a wide range says the machine was noisy).
 """
 import argparse
 import os
@@ -55,6 +61,20 @@ def median_of(runs, command, fresh=None):
     return tuple(statistics.median(s[i] for s in samples) for i in range(3))
 
 
+def paired(runs, a, b):
+    """A and B in turn, one pair not counted first. a, b: (argv, folder to remove before
+    each run or None). Medians of each, and the pairs' CPU ratios A/B."""
+    def one(command, fresh):
+        if fresh:
+            shutil.rmtree(fresh, ignore_errors=True)
+        return run(command)
+    one(*a), one(*b)
+    pairs = [(one(*a), one(*b)) for _ in range(runs)]
+    medians = [tuple(statistics.median(p[side][i] for p in pairs) for i in range(3)) for side in (0, 1)]
+    ratios = [p[0][0] / p[1][0] for p in pairs]
+    return medians[0], medians[1], ratios
+
+
 def first_missed_mark(mission):
     with h5py.File(mission, "r") as f:
         t, _, r = f["truth/missed_marks"][0]
@@ -90,10 +110,15 @@ def main():
     parser.add_argument("--only", nargs="+", help="command names to time (prefixes of the table's names)")
     parser.add_argument("--skip", nargs="+", default=[], help="command names not to time (prefixes)")
     parser.add_argument("--keep", help="folder for the files (default: a temporary one, removed)")
+    parser.add_argument("--big-runs", type=int, default=1, help="runs (or pairs) at 10^6 and 10^7 steps")
+    parser.add_argument("--vs", help="a second gesmi build (B), run in turn with --gesmi (A)")
     args = parser.parse_args()
     gesmi = os.path.abspath(args.gesmi)
     folder = args.keep or tempfile.mkdtemp(prefix="gesmi-whole-")
     os.makedirs(folder, exist_ok=True)
+    if args.vs:
+        compare(args, gesmi, os.path.abspath(args.vs), folder)
+        return
     print("| command | steps | CPU (s) | wall (s) | peak memory (MB) | runs |")
     print("|---|---:|---:|---:|---:|---:|")
     try:
@@ -105,12 +130,10 @@ def main():
             with h5py.File(mission, "r") as f:
                 steps = f["nav/time"].shape[0]
             print(f"| simulate | {steps:,} | {cpu:.3f} | {wall:.3f} | {peak:.0f} | 1 |", flush=True)
-            runs = args.runs if size == "ref" else 1
+            runs = args.runs if size == "ref" else args.big_runs
             operator = [0.0, 0.0]
             for name, command, setup, fresh in commands(gesmi, folder, mission):
-                if args.only and not any(name.startswith(o) for o in args.only):
-                    continue
-                if any(name.startswith(o) for o in args.skip):
+                if not wanted(args, name):
                     continue
                 if setup:
                     run(setup)
@@ -120,6 +143,43 @@ def main():
                 print(f"| {name} | {steps:,} | {cpu:.3f} | {wall:.3f} | {peak:.0f} | {runs} |", flush=True)
             if not args.only:
                 print(f"| operator iteration (marks add, solve --from, waterfall, candidates) | {steps:,} | {operator[0]:.3f} | {operator[1]:.3f} | | |")
+    finally:
+        if not args.keep:
+            shutil.rmtree(folder, ignore_errors=True)
+
+
+def wanted(args, name):
+    return (not args.only or any(name.startswith(o) for o in args.only)) and not any(
+        name.startswith(o) for o in args.skip)
+
+
+def compare(args, gesmi_a, gesmi_b, folder):
+    """--vs: each command of A and B in turn, on the same mission (A simulates it)."""
+    print("| command | steps | CPU A (s) | CPU B (s) | A/B CPU: median (range) | wall A (s) | wall B (s) "
+          "| peak A (MB) | peak B (MB) | pairs |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    try:
+        for size in args.sizes:
+            mission = f"{folder}/m-{size}.h5"
+            run([gesmi_a, "simulate", "--preset", "redermor", "--seed", "1", "--missed", "0.3", "--duration",
+                 repr(SIZES[size]), "-o", mission])
+            with h5py.File(mission, "r") as f:
+                steps = f["nav/time"].shape[0]
+            runs = args.runs if size == "ref" else args.big_runs
+            sides = []
+            for side, gesmi in (("a", gesmi_a), ("b", gesmi_b)):
+                os.makedirs(f"{folder}/{side}", exist_ok=True)
+                sides.append(commands(gesmi, f"{folder}/{side}", mission))
+            for (name, command_a, setup_a, fresh_a), (_, command_b, setup_b, fresh_b) in zip(*sides):
+                if not wanted(args, name):
+                    continue
+                for setup in (setup_a, setup_b):
+                    if setup:
+                        run(setup)
+                a, b, ratios = paired(runs, (command_a, fresh_a), (command_b, fresh_b))
+                print(f"| {name} | {steps:,} | {a[0]:.3f} | {b[0]:.3f} | {statistics.median(ratios):.2f} "
+                      f"({min(ratios):.2f}–{max(ratios):.2f}) | {a[1]:.3f} | {b[1]:.3f} | {a[2]:.1f} | {b[2]:.1f} "
+                      f"| {runs} |", flush=True)
     finally:
         if not args.keep:
             shutil.rmtree(folder, ignore_errors=True)

@@ -171,12 +171,21 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
   const auto point = [&](std::size_t k) { return Vec3(reference[3 * k], reference[3 * k + 1], reference[3 * k + 2]); };
   ArrowheadChain kept(n, q);
   for (std::size_t k = 0; k + 1 < n; ++k) kept.add_step(k, w[k], delta[k]);
+  // The same information handed to the constructor (the smoother's dead reckoning keeps
+  // it before the chain exists): kept as above, and refused with a step missing.
+  ArrowheadChain given(n, q, w);
+  EXPECT_THROW(given.add_step(0, w[0], delta[0]), std::logic_error);  // would make it 2W
+  EXPECT_THROW(ArrowheadChain(n, q, std::vector<Mat3>(w.begin() + 1, w.end())), std::invalid_argument);
   for (const unsigned pass : {1u, 2u, 3u}) {
     kept.reset_keeping_steps();
     other_factors(kept, pass);
     kept.add_steps_again(delta, reference);
     EXPECT_THROW(kept.solve_covariances(), std::logic_error);  // the means first
     kept.solve_means();  // (as the smoother solves a pass that needs no covariance)
+    given.reset_keeping_steps();
+    other_factors(given, pass);
+    given.add_steps_again(delta, reference);
+    given.solve();
     ArrowheadChain fresh(n, q);
     other_factors(fresh, pass);
     for (std::size_t k = 0; k + 1 < n; ++k)
@@ -188,7 +197,10 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
     for (std::size_t k = 0; k < n; ++k) {
       ASSERT_EQ(kept.mean(k), fresh.mean(k)) << "pass " << pass << ", step " << k;
       ASSERT_EQ(kept.covariance(k), fresh.covariance(k)) << "pass " << pass << ", step " << k;
+      ASSERT_EQ(given.mean(k), fresh.mean(k)) << "pass " << pass << ", step " << k;
+      ASSERT_EQ(given.covariance(k), fresh.covariance(k)) << "pass " << pass << ", step " << k;
     }
+    EXPECT_EQ(given.static_covariance(), fresh.static_covariance());
     EXPECT_EQ(kept.static_mean(), fresh.static_mean());
     EXPECT_EQ(kept.static_covariance(), fresh.static_covariance());
   }
