@@ -7,10 +7,14 @@ Markdown table. Missions: the reference-like one (59,995 steps) and, with --size
 
     tools/bench/whole_process.py [--gesmi build/bin/gesmi] [--runs 5] [--sizes ref 1e6 1e7]
                                  [--big-runs 1] [--only solve warm ...] [--skip NAME ...]
-                                 [--keep DIR] [--vs OTHER/gesmi]
+                                 [--keep DIR] [--vs OTHER/gesmi] [--pause SECONDS]
 
 The operator iteration is `marks add` + `solve --from` + `waterfall` + `candidates`
 after one missed mark is found (the simulator's first missed mark, its true range).
+
+--pause waits before each run, as an operator does between commands: on a virtual
+machine the memory a command gets back right after another freed it is cheaper than
+after a pause (docs/performance.md, "The heap back in small pages").
 
 --vs compares two builds on a shared machine, whose speed drifts between minutes: each
 command of the two is run in turn (A B A B ..., after one pair not counted), each in its
@@ -31,12 +35,16 @@ import h5py
 SIZES = {"ref": 5999.4, "1e6": 100000.0, "1e7": 1000000.0}  # simulated seconds at 10 Hz
 
 
+PAUSE = 0.0  # seconds slept before each timed run (--pause)
+
+
 def run(command, quiet=True):
     """One process: (CPU s, wall s, peak RSS MB). Exit codes 0 and 3 count as done.
 
     The peak comes from /usr/bin/time, which forks the command: a process this script
     starts directly inherits, through exec, the peak of the Python interpreter it was
     forked from (about 45 MB), which hid every smaller peak."""
+    time.sleep(PAUSE)
     with tempfile.NamedTemporaryFile("r", prefix="gesmi-peak-") as peak_file:
         timed = ["/usr/bin/time", "-q", "-f", "%M", "-o", peak_file.name] + command
         start = time.perf_counter()
@@ -112,7 +120,11 @@ def main():
     parser.add_argument("--keep", help="folder for the files (default: a temporary one, removed)")
     parser.add_argument("--big-runs", type=int, default=1, help="runs (or pairs) at 10^6 and 10^7 steps")
     parser.add_argument("--vs", help="a second gesmi build (B), run in turn with --gesmi (A)")
+    parser.add_argument("--pause", type=float, default=0.0,
+                        help="seconds to wait before each run, as a user pausing between commands")
     args = parser.parse_args()
+    global PAUSE
+    PAUSE = args.pause
     gesmi = os.path.abspath(args.gesmi)
     folder = args.keep or tempfile.mkdtemp(prefix="gesmi-whole-")
     os.makedirs(folder, exist_ok=True)

@@ -11,7 +11,7 @@
 #include "io/io_version.h"
 #include "io/text/message_text.h"
 #include "tools/gesmi/command.h"
-#include "tools/gesmi/huge_page_heap.h"
+#include "tools/gesmi/command_heap.h"
 
 namespace gesmi::cli {
 
@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
   const std::string who = "gesmi " + args[0];
-  use_huge_page_heap();
+  use_command_heap();
   gesmi::io::set_command_line(args);  // recorded in every file this run writes
   try {
     return found->run(std::span<const std::string>(args).subspan(1));

@@ -1,0 +1,75 @@
+// What fresh memory costs on this machine (docs/performance.md, "The heap back in small
+// pages"): a new anonymous mapping of the given MiB, in small pages or marked for
+// transparent huge pages, written once a page, then unmapped. CPU time per MiB, the
+// kernel's work included (page faults, zeroing and, on a virtual machine, the host
+// backing the memory). A pause before each mapping, outside the timing, lets memory
+// freed by the last one go back to the host as it does between a user's commands
+// (free page reporting); without it, each mapping gets the pages the last one freed.
+//
+//   gesmi-bench --benchmark_filter=BM_FreshMemory
+//
+// Arguments: MiB, huge pages (0 or 1), pause before each mapping (ms).
+
+#include <benchmark/benchmark.h>
+
+#include <sys/mman.h>
+
+#include <chrono>
+#include <ctime>
+#include <cstddef>
+#include <cstdint>
+#include <thread>
+
+namespace {
+
+constexpr std::size_t kHugePage = std::size_t{2} << 20;
+constexpr std::size_t kSmallPage = 4096;
+
+double thread_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) / 1e6;
+}
+
+void BM_FreshMemory(benchmark::State& state) {
+  const auto bytes = static_cast<std::size_t>(state.range(0)) << 20;
+  const bool huge = state.range(1) != 0;
+  const auto pause = std::chrono::milliseconds(state.range(2));
+  double touching_ms = 0.0;  // this thread's CPU time in the writes (the faults are charged to it)
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::this_thread::sleep_for(pause);
+    // Over-mapped by a huge page, so that the range written starts on one.
+    void* raw = mmap(nullptr, bytes + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (raw == MAP_FAILED) {
+      state.SkipWithError("mmap refused the mapping");
+      break;
+    }
+    auto* start = reinterpret_cast<unsigned char*>((reinterpret_cast<std::uintptr_t>(raw) + kHugePage - 1) &
+                                                   ~(std::uintptr_t{kHugePage} - 1));
+    madvise(start, bytes, huge ? MADV_HUGEPAGE : MADV_NOHUGEPAGE);
+    state.ResumeTiming();
+    const double before = thread_cpu_ms();
+    for (std::size_t offset = 0; offset < bytes; offset += kSmallPage) start[offset] = 1;
+    benchmark::DoNotOptimize(start[bytes / 2]);
+    touching_ms += thread_cpu_ms() - before;
+    state.PauseTiming();
+    munmap(raw, bytes + kHugePage);
+    state.ResumeTiming();
+  }
+  state.counters["cpu_ms_per_MiB"] =
+      touching_ms / (static_cast<double>(state.iterations()) * static_cast<double>(state.range(0)));
+}
+
+BENCHMARK(BM_FreshMemory)
+    ->ArgNames({"MiB", "huge", "pause_ms"})
+    ->Args({16, 0, 0})
+    ->Args({16, 1, 0})
+    ->Args({16, 0, 3000})
+    ->Args({16, 1, 3000})
+    ->Args({256, 0, 3000})
+    ->Args({256, 1, 3000})
+    ->Iterations(6)
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace

@@ -1,0 +1,28 @@
+// Why: fresh memory costs a page fault per page the first time it is touched, and glibc
+// by default gives blocks of 128 kB and more their own mapping, unmapped when freed, so
+// each such block is faulted in again after every free; its worker threads get arenas of
+// their own, and it returns the heap's top to the kernel when freed. The command's
+// arrays are freed and allocated again all along a solve, so here blocks up to 32 MiB
+// come from the heap and stay there for reuse. The heap is left in small pages: on a
+// virtual machine that gives its free 2 MiB blocks back to the host (free page
+// reporting), a huge page is fresh host memory every time, and a command run after a
+// pause spent more in those faults than in small ones (docs/performance.md).
+
+#include "tools/gesmi/command_heap.h"
+
+#include <malloc.h>
+
+#include "tools/gesmi/huge_page_blocks.h"
+
+namespace gesmi::cli {
+
+void use_command_heap() {
+  use_huge_page_blocks();  // the blocks too large for the heap
+#if !defined(__SANITIZE_ADDRESS__)  // (ASan's allocator ignores glibc's settings)
+  mallopt(M_MMAP_THRESHOLD, static_cast<int>(kHugePageBlock));
+  mallopt(M_ARENA_MAX, 1);          // worker threads allocate from the same heap
+  mallopt(M_TRIM_THRESHOLD, -1);    // never trimmed (mallopt(3))
+#endif
+}
+
+}  // namespace gesmi::cli
