@@ -101,7 +101,7 @@ struct MarkSample {
   double roll = 0.0, pitch = 0.0, heading = 0.0, altitude = 0.0;
 };
 /// One per mark of the mission, in table order (the mission's attitude and altitude
-/// must be there).
+/// must be there); none for a mission without samples.
 std::vector<MarkSample> mark_samples(const Mission& mission);
 
 struct MeasurementOptions {
@@ -109,7 +109,8 @@ struct MeasurementOptions {
   bool biases = false;  // compute the bias terms (zero otherwise)
   FactorSet factors = FactorSet::all;
   /// The marks' samples kept aside (mark_samples()) when the mission's attitude and
-  /// altitude were released; empty: read from the mission.
+  /// altitude were released; empty: read from the mission. A view: the samples must
+  /// outlive these options.
   std::span<const MarkSample> marks{};
 };
 

@@ -71,8 +71,10 @@ KalmanResult kalman_smooth(const Mission& mission, const SensorModel& model, std
 /// the passes after the dead reckoning do not read are emptied once it is done: the DVL,
 /// the attitude and the altitude (the marks' samples are kept aside), and every
 /// per-sample half-width (56 bytes a step, 120 with half-widths; the time and depth
-/// stay). The chain's blocks then reuse their memory: the peak is lower by as much. With
-/// biases every pass reads them, and nothing is released.
+/// stay). The chain's blocks then reuse their memory: the peak is lower by up to as
+/// much. With biases every pass reads them, and nothing is released. Once released they
+/// stay released, also when the smoother then throws or solves nothing
+/// (max_iterations < 1): put them back (read the mission again) before reusing it.
 KalmanResult kalman_smooth(Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
                            const KalmanOptions& options, MissionReadings readings);
 

@@ -12,7 +12,7 @@ DvlSample DvlSample::of(const Mission& m, std::size_t k) {
   const std::vector<double>* readings[3] = {&m.vx, &m.vy, &m.vz};
   const std::vector<double>* widths[3] = {&m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz};
   if (k >= m.vx.size() || k >= m.vy.size() || k >= m.vz.size())
-    throw std::logic_error("sample " + std::to_string(k) + " has no DVL reading (released by a solve? MissionReadings)");
+    throw std::logic_error("sample " + std::to_string(k) + " has no DVL reading (released by a solve or the smoother? MissionReadings)");
   DvlSample s;
   for (int i = 0; i < 3; ++i) {
     s.reading[i] = (*readings[i])[k];

@@ -47,7 +47,7 @@ double SensorBoxes::frame_scale(std::size_t k) const { return add_up(m_.depth_sc
 
 Interval SensorBoxes::depth(std::size_t k) const {
   if (k >= m_.depth.size())
-    throw std::logic_error("sample " + std::to_string(k) + " has no depth reading (released by a solve? MissionReadings)");
+    throw std::logic_error("sample " + std::to_string(k) + " has no depth reading (released by a solve or the smoother? MissionReadings)");
   const double bound = depth_bound(model_, m_.depth[k]);
   return reading(m_.depth, m_.half_widths.depth, k, bound);
 }

@@ -265,6 +265,9 @@ std::string wording(const SolveReport& report, const SolveOptions& options, cons
 
 // Every mode's solve; `releasable`: see MissionReadings.
 MissionSolution solve_in_mode(const Mission& mission, const SolveOptions& options, Mission* releasable) {
+  // The smoother releases more than a solve does (the attitude and altitude too).
+  if (readings_released(mission))
+    throw std::invalid_argument("solve_mission: the mission's navigation readings were released (MissionReadings); put them back");
   MissionSolution s;
   s.mark_time = mission.mark_time;
   s.mark_range = mission.mark_range;
@@ -341,7 +344,7 @@ MissionSolution solve_mission(Mission& mission, const SolveOptions& options, Mis
 void diagnose_inconsistency(const Mission& mission, const SolveOptions& options, MissionSolution& s) {
   if (!s.report.diagnosis_pending) return;
   if (readings_released(mission))
-    throw std::invalid_argument("diagnose_inconsistency: the mission's DVL and depth readings were released; put them back");
+    throw std::invalid_argument("diagnose_inconsistency: the mission's navigation readings were released (MissionReadings); put them back");
   if (mission.time != s.time || mission.mark_time != s.mark_time || mission.mark_range != s.mark_range ||
       mission.mark_mine != s.mark_mine || mission.mark_side != s.mark_side || mission.mine_count != s.mine_count ||
       !same_sensor_model(mission.model, s.model))

@@ -82,6 +82,9 @@ bool sanitized() {
 // "The heap back in small pages").
 TEST(CommandHeap, BlocksUpTo32MiBComeFromTheHeapInSmallPages) {
   if (sanitized()) GTEST_SKIP() << "ASan replaces malloc";
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  if (tunables != nullptr && std::string(tunables).find("glibc.malloc.hugetlb") != std::string::npos)
+    GTEST_SKIP() << "GLIBC_TUNABLES asks glibc for huge pages in its heap";
   cli::use_command_heap();
   std::vector<double> block(std::size_t{2} << 20, 1.5);
   std::vector<double> column(60'000, 2.5);  // a 60,000-step mission's column is 480 kB

@@ -32,7 +32,7 @@ TEST(Progress, ALongSolveShowsItsStagesOnATerminalAndClearsTheLine) {
   const std::string dir = temp_folder("progress");
   const std::string gesmi = std::string(GESMI_BIN_DIR) + "/gesmi";
   // 10^6 steps: a solve of about a second, longer than the line's 0.3 s delay (3 x 10^5
-  // steps took 0.6 s before the heap was in huge pages, and then less than the delay).
+  // steps once took 0.6 s, and then less than the delay as the command got faster).
   ASSERT_EQ(run_gesmi({"simulate", "--seed", "3", "--duration", "100000", "-o", dir + "/m.h5"}).exit_code, 0);
   const auto [code, out] = on_terminal(gesmi + " solve " + dir + "/m.h5 -o " + dir + "/r.h5");
   ASSERT_EQ(code, 0) << out;

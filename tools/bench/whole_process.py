@@ -2,7 +2,8 @@
 """Whole-process cost of the gesmi commands (docs/performance.md, "Whole process"):
 each command run as a process, several times, with its CPU time (user + system, from
 wait4), wall time and peak resident memory; the median of the runs is printed as a
-Markdown table. Missions: the reference-like one (59,995 steps) and, with --sizes,
+Markdown table. Each command first runs once under /usr/bin/time for its peak; that run
+is not counted in the times (time's own start would add a few milliseconds to them). Missions: the reference-like one (59,995 steps) and, with --sizes,
 10^6 and 10^7 steps (the survey repeated).
 
     tools/bench/whole_process.py [--gesmi build/bin/gesmi] [--runs 5] [--sizes ref 1e6 1e7]
@@ -38,15 +39,17 @@ SIZES = {"ref": 5999.4, "1e6": 100000.0, "1e7": 1000000.0}  # simulated seconds 
 PAUSE = 0.0  # seconds slept before each timed run (--pause)
 
 
-def run(command, quiet=True):
-    """One process: (CPU s, wall s, peak RSS MB). Exit codes 0 and 3 count as done.
+def run(command, quiet=True, peak=False):
+    """One process: (CPU s, wall s, peak RSS MiB or None). Exit codes 0 and 3 count as done.
 
-    The peak comes from /usr/bin/time, which forks the command: a process this script
-    starts directly inherits, through exec, the peak of the Python interpreter it was
-    forked from (about 45 MB), which hid every smaller peak."""
+    With `peak`, the command runs under /usr/bin/time, which forks it and reads its peak:
+    a process this script starts directly inherits, through exec, the peak of the Python
+    interpreter it was forked from (about 45 MB), which hid every smaller peak. Its times
+    are then those of /usr/bin/time and the command together (time's own start costs a
+    few milliseconds of CPU), so the times counted come from runs without it."""
     time.sleep(PAUSE)
     with tempfile.NamedTemporaryFile("r", prefix="gesmi-peak-") as peak_file:
-        timed = ["/usr/bin/time", "-q", "-f", "%M", "-o", peak_file.name] + command
+        timed = ["/usr/bin/time", "-q", "-f", "%M", "-o", peak_file.name] + command if peak else command
         start = time.perf_counter()
         process = subprocess.Popen(timed, stdout=subprocess.DEVNULL if quiet else None, stderr=subprocess.PIPE)
         _, status, usage = os.wait4(process.pid, 0)
@@ -55,30 +58,32 @@ def run(command, quiet=True):
         if code not in (0, 3):
             sys.exit(f"whole_process: {' '.join(command)} exited {code}: {process.stderr.read().decode().strip()}")
         process.stderr.close()
-        peak_kb = float(peak_file.read().split()[-1])
-    return usage.ru_utime + usage.ru_stime, wall, peak_kb / 1024.0
+        peak_mib = float(peak_file.read().split()[-1]) / 1024.0 if peak else None
+    return usage.ru_utime + usage.ru_stime, wall, peak_mib
+
+
+def one(command, fresh, peak=False):
+    """run(), after removing `fresh` (a folder the command writes, or None)."""
+    if fresh:
+        shutil.rmtree(fresh, ignore_errors=True)
+    return run(command, peak=peak)
 
 
 def median_of(runs, command, fresh=None):
-    """Median CPU, wall and peak over the runs; `fresh` (a folder) is removed before each."""
-    samples = []
-    for _ in range(runs):
-        if fresh:
-            shutil.rmtree(fresh, ignore_errors=True)
-        samples.append(run(command))
-    return tuple(statistics.median(s[i] for s in samples) for i in range(3))
+    """Median CPU and wall over the runs, and the peak of one run before them (not counted)."""
+    peak = one(command, fresh, peak=True)[2]
+    samples = [one(command, fresh) for _ in range(runs)]
+    return statistics.median(s[0] for s in samples), statistics.median(s[1] for s in samples), peak
 
 
 def paired(runs, a, b):
-    """A and B in turn, one pair not counted first. a, b: (argv, folder to remove before
-    each run or None). Medians of each, and the pairs' CPU ratios A/B."""
-    def one(command, fresh):
-        if fresh:
-            shutil.rmtree(fresh, ignore_errors=True)
-        return run(command)
-    one(*a), one(*b)
+    """A and B in turn, after one pair not counted that measures the peaks. a, b: (argv,
+    folder to remove before each run or None). Medians of each, and the pairs' CPU
+    ratios A/B."""
+    peaks = (one(*a, peak=True)[2], one(*b, peak=True)[2])
     pairs = [(one(*a), one(*b)) for _ in range(runs)]
-    medians = [tuple(statistics.median(p[side][i] for p in pairs) for i in range(3)) for side in (0, 1)]
+    medians = [tuple(statistics.median(p[side][i] for p in pairs) for i in range(2)) + (peaks[side],)
+               for side in (0, 1)]
     ratios = [p[0][0] / p[1][0] for p in pairs]
     return medians[0], medians[1], ratios
 
@@ -90,24 +95,34 @@ def first_missed_mark(mission):
 
 
 def commands(gesmi, folder, mission):
-    """(name, argv, setup argv or None, folder to remove before each run or None), in the
-    order a user runs them."""
+    """(name, argv, setup, folder to remove before each run or None), in the order a user
+    runs them; setup: the (argv, file it writes) each needs first, run when the file is
+    missing (with --only, the commands before it were not run)."""
     result, warm_mission = f"{folder}/r.h5", f"{folder}/m2.h5"
     t, r = first_missed_mark(mission)
-    add = [gesmi, "marks", "add", mission, "--time", repr(t), "--range", repr(r), "-o", warm_mission]
+    solve = ([gesmi, "solve", mission, "-o", result], result)
+    add = ([gesmi, "marks", "add", mission, "--time", repr(t), "--range", repr(r), "-o", warm_mission], warm_mission)
     return [
-        ("solve", [gesmi, "solve", mission, "-o", result], None, None),
+        ("solve", solve[0], [], None),
         ("solve --png --geojson --mines-csv", [gesmi, "solve", mission, "-o", f"{folder}/all.h5", "--png", "--geojson",
-                                               "--mines-csv"], None, None),
-        ("marks add", add, None, None),
-        ("solve --from (one added mark)", [gesmi, "solve", warm_mission, "--from", result, "-o", f"{folder}/w.h5"], add,
+                                               "--mines-csv"], [], None),
+        ("marks add", add[0], [], None),
+        ("solve --from (one added mark)", [gesmi, "solve", warm_mission, "--from", result, "-o", f"{folder}/w.h5"],
+         [solve, add], None),
+        ("waterfall", [gesmi, "waterfall", result, "-o", f"{folder}/wf.png"], [solve], None),
+        ("candidates", [gesmi, "candidates", result], [solve], None),
+        ("export tube-csv", [gesmi, "export", result, "--format", "tube-csv", "-o", f"{folder}/tube.csv"], [solve],
          None),
-        ("waterfall", [gesmi, "waterfall", result, "-o", f"{folder}/wf.png"], None, None),
-        ("candidates", [gesmi, "candidates", result], None, None),
-        ("export tube-csv", [gesmi, "export", result, "--format", "tube-csv", "-o", f"{folder}/tube.csv"], None, None),
-        ("kalman", [gesmi, "kalman", mission, "-o", f"{folder}/k.h5"], None, None),
-        ("export csv", [gesmi, "export", mission, "-o", f"{folder}/csv"], None, f"{folder}/csv"),
+        ("kalman", [gesmi, "kalman", mission, "-o", f"{folder}/k.h5"], [], None),
+        ("export csv", [gesmi, "export", mission, "-o", f"{folder}/csv"], [], f"{folder}/csv"),
     ]
+
+
+def prepare(setup):
+    """Runs the setup commands whose files are missing."""
+    for argv, writes in setup:
+        if not os.path.exists(writes):
+            run(argv)
 
 
 def main():
@@ -131,14 +146,14 @@ def main():
     if args.vs:
         compare(args, gesmi, os.path.abspath(args.vs), folder)
         return
-    print("| command | steps | CPU (s) | wall (s) | peak memory (MB) | runs |")
+    print("| command | steps | CPU (s) | wall (s) | peak memory (MiB) | runs |")
     print("|---|---:|---:|---:|---:|---:|")
     try:
         for size in args.sizes:
             mission = f"{folder}/m-{size}.h5"
             simulate = [gesmi, "simulate", "--preset", "redermor", "--seed", "1", "--missed", "0.3", "--duration",
                         repr(SIZES[size]), "-o", mission]
-            cpu, wall, peak = run(simulate)
+            cpu, wall, peak = run(simulate, peak=True)
             with h5py.File(mission, "r") as f:
                 steps = f["nav/time"].shape[0]
             print(f"| simulate | {steps:,} | {cpu:.3f} | {wall:.3f} | {peak:.0f} | 1 |", flush=True)
@@ -147,8 +162,7 @@ def main():
             for name, command, setup, fresh in commands(gesmi, folder, mission):
                 if not wanted(args, name):
                     continue
-                if setup:
-                    run(setup)
+                prepare(setup)
                 cpu, wall, peak = median_of(runs, command, fresh)
                 if name in ("marks add", "solve --from (one added mark)", "waterfall", "candidates"):
                     operator = [operator[0] + cpu, operator[1] + wall]
@@ -168,7 +182,7 @@ def wanted(args, name):
 def compare(args, gesmi_a, gesmi_b, folder):
     """--vs: each command of A and B in turn, on the same mission (A simulates it)."""
     print("| command | steps | CPU A (s) | CPU B (s) | A/B CPU: median (range) | wall A (s) | wall B (s) "
-          "| peak A (MB) | peak B (MB) | pairs |")
+          "| peak A (MiB) | peak B (MiB) | pairs |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     try:
         for size in args.sizes:
@@ -185,9 +199,8 @@ def compare(args, gesmi_a, gesmi_b, folder):
             for (name, command_a, setup_a, fresh_a), (_, command_b, setup_b, fresh_b) in zip(*sides):
                 if not wanted(args, name):
                     continue
-                for setup in (setup_a, setup_b):
-                    if setup:
-                        run(setup)
+                prepare(setup_a)
+                prepare(setup_b)
                 a, b, ratios = paired(runs, (command_a, fresh_a), (command_b, fresh_b))
                 print(f"| {name} | {steps:,} | {a[0]:.3f} | {b[0]:.3f} | {statistics.median(ratios):.2f} "
                       f"({min(ratios):.2f}–{max(ratios):.2f}) | {a[1]:.3f} | {b[1]:.3f} | {a[2]:.1f} | {b[2]:.1f} "

@@ -1,7 +1,9 @@
 // Why: fresh memory costs a page fault per page the first time it is touched, and glibc
 // by default gives blocks of 128 kB and more their own mapping, unmapped when freed, so
-// each such block is faulted in again after every free; its worker threads get arenas of
-// their own, and it returns the heap's top to the kernel when freed. The command's
+// each such block is faulted in again after every free (its threshold then rises to the
+// size of a freed block, up to 32 MiB, but only after that first round); its worker
+// threads get arenas of their own, and it returns the heap's top to the kernel past
+// 128 kB free (the threshold rises there too). The command's
 // arrays are freed and allocated again all along a solve, so here blocks up to 32 MiB
 // come from the heap and stay there for reuse. The heap is left in small pages: on a
 // virtual machine that gives its free 2 MiB blocks back to the host (free page

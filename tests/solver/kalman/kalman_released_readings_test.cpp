@@ -15,6 +15,7 @@
 #include "solver/kalman/kalman_measurements.h"
 #include "solver/kalman/kalman_smoother.h"
 #include "solver/sim/simulator.h"
+#include "solver/solve/solve_mission.h"
 
 namespace gesmi {
 namespace {
@@ -76,8 +77,23 @@ TEST(KalmanReleasedReadings, ReleasesWhatOnlyTheDeadReckoningReadsAndChangesNoBi
   EXPECT_EQ(released.depth, m.depth);
   EXPECT_EQ(released.mark_time, m.mark_time);
   EXPECT_TRUE(readings_released(released));
-  // A smoothing needs the readings: refused, not read out of bounds.
+  // A smoothing or a solve needs the readings: refused, not read out of bounds.
   EXPECT_THROW(kalman_smooth(released, released.model, fixes), std::logic_error);
+  EXPECT_THROW(solve_mission(released), std::invalid_argument);
+}
+
+// Marks on a mission without samples: no sample to keep aside, nothing read.
+TEST(KalmanReleasedReadings, AMissionWithoutSamplesKeepsNoMarkSample) {
+  Mission m;
+  m.mine_count = 1;
+  m.mark_time = {10.0};
+  m.mark_range = {20.0};
+  m.mark_mine = {0};
+  m.mark_side = {1};
+  EXPECT_TRUE(mark_samples(m).empty());
+  const KalmanResult r = kalman_smooth(m, m.model, {}, {}, MissionReadings::released_after_use);
+  EXPECT_EQ(r.steps, 0u);
+  EXPECT_TRUE(std::isnan(r.mine_mean.at(0)));
 }
 
 TEST(KalmanReleasedReadings, KeepsEverythingWhenAskedOrWithBiases) {
