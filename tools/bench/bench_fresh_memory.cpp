@@ -8,7 +8,10 @@
 //
 //   gesmi-bench --benchmark_filter=BM_FreshMemory
 //
-// Arguments: MiB, huge pages (0 or 1), pause before each mapping (ms). The pauses add
+// BM_SmallPageFault: the gesmi command's own probe (page_fault_cost.h), the figure its
+// heap's page size is chosen by (command_heap.h), and which that is on this machine.
+//
+// Arguments of BM_FreshMemory: MiB, huge pages (0 or 1), pause before each mapping (ms). The pauses add
 // about 72 s to a whole gesmi-bench run; a huge-page row is skipped when the kernel's
 // transparent huge pages are off.
 
@@ -23,6 +26,9 @@
 #include <fstream>
 #include <string>
 #include <thread>
+
+#include "tools/gesmi/command_heap.h"
+#include "tools/gesmi/page_fault_cost.h"
 
 namespace {
 
@@ -86,5 +92,15 @@ BENCHMARK(BM_FreshMemory)
     ->Args({256, 1, 3000})
     ->Iterations(6)
     ->Unit(benchmark::kMillisecond);
+
+void BM_SmallPageFault(benchmark::State& state) {
+  double microseconds = 0.0;
+  for (auto _ : state) microseconds += gesmi::cli::small_page_fault_microseconds();
+  const double per_fault = microseconds / static_cast<double>(state.iterations());
+  state.counters["us_per_fault"] = per_fault;
+  state.SetLabel(per_fault >= gesmi::cli::kCostlySmallFault ? "the command's heap: huge pages"
+                                                            : "the command's heap: small pages");
+}
+BENCHMARK(BM_SmallPageFault)->Iterations(20)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
