@@ -20,8 +20,8 @@ inline constexpr double kCostlySmallFault = 4.0;
 // exit, and blocks too big for the heap in huge pages (huge_page_blocks.h): freed
 // memory is reused, not faulted in again (docs/architecture.md, "Memory"). The heap
 // itself in the pages asked for; by_fault_cost measures a small page's fault first
-// (16 faults). Returns the heap's pages: small where huge ones were asked for but
-// could not be had. Never fails.
+// (16 faults). Call before any thread starts. Returns the heap's pages: small where
+// huge ones were asked for but could not be had. Never fails.
 HeapPages use_command_heap(HeapPages pages = HeapPages::by_fault_cost);
 
 }  // namespace gesmi::cli

@@ -25,7 +25,7 @@ constexpr int kDefaultMmapMax = 65536;  // mallopt(3)
 
 // Whether glibc fills blocks on malloc and free (MALLOC_PERTURB_, glibc.malloc.perturb):
 // the reserve's block would then be written whole, in small pages, at every start.
-bool malloc_perturbs() {
+[[maybe_unused]] bool malloc_perturbs() {  // (unused under ASan)
   const char* perturb = std::getenv("MALLOC_PERTURB_");
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   return (perturb != nullptr && std::atoi(perturb) != 0) ||
@@ -60,10 +60,14 @@ bool mark_heap_for_huge_pages() {
   // (glibc's default: a value set through MALLOC_MMAP_MAX_ cannot be read back)
   mallopt(M_MMAP_MAX, kDefaultMmapMax);
   const auto after = reinterpret_cast<std::uintptr_t>(sbrk(0));
+  const auto reserve = reinterpret_cast<std::uintptr_t>(probe);
   std::free(probe);
   // Too little heap to mark: brk refused (glibc then maps the block apart, and the heap
   // goes on in small pages), or the reserve refused (strict overcommit, a data limit).
-  if (probe == nullptr || after <= start + kHugePage) return false;
+  if (reserve == 0 || after <= start + kHugePage) return false;
+  // The reserve mapped apart (the break could not grow past another mapping): the heap
+  // goes on elsewhere, in small pages.
+  if (reserve < start || reserve + kHeapReserve > after) return false;
   return madvise(reinterpret_cast<void*>(start), after - start, MADV_HUGEPAGE) == 0;
 #endif
 }
