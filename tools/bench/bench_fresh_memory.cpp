@@ -20,7 +20,6 @@
 #include <sys/mman.h>
 
 #include <chrono>
-#include <ctime>
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
@@ -34,12 +33,6 @@ namespace {
 
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
 constexpr std::size_t kSmallPage = 4096;
-
-double thread_cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) / 1e6;
-}
 
 // Whether madvise(MADV_HUGEPAGE) can give huge pages ("always" or "madvise" selected).
 bool huge_pages_available() {
@@ -70,10 +63,10 @@ void BM_FreshMemory(benchmark::State& state) {
                                                    ~(std::uintptr_t{kHugePage} - 1));
     madvise(start, bytes, huge ? MADV_HUGEPAGE : MADV_NOHUGEPAGE);
     state.ResumeTiming();
-    const double before = thread_cpu_ms();
+    const double before = gesmi::cli::thread_cpu_microseconds();
     for (std::size_t offset = 0; offset < bytes; offset += kSmallPage) start[offset] = 1;
     benchmark::DoNotOptimize(start[bytes / 2]);
-    touching_ms += thread_cpu_ms() - before;
+    touching_ms += (gesmi::cli::thread_cpu_microseconds() - before) / 1e3;
     state.PauseTiming();
     munmap(raw, bytes + kHugePage);
     state.ResumeTiming();

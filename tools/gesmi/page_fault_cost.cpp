@@ -20,12 +20,6 @@ namespace {
 
 constexpr int kPagesPerRound = 8;
 
-double thread_cpu_microseconds() {
-  timespec t{};
-  if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t) != 0) return std::numeric_limits<double>::quiet_NaN();
-  return static_cast<double>(t.tv_sec) * 1e6 + static_cast<double>(t.tv_nsec) / 1e3;
-}
-
 // One round: a fresh mapping in small pages, each page written once; per page.
 double one_round(std::size_t page) {
   const std::size_t bytes = page * kPagesPerRound;
@@ -41,6 +35,12 @@ double one_round(std::size_t page) {
 }
 
 }  // namespace
+
+double thread_cpu_microseconds() {
+  timespec t{};
+  if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t) != 0) return std::numeric_limits<double>::quiet_NaN();
+  return static_cast<double>(t.tv_sec) * 1e6 + static_cast<double>(t.tv_nsec) / 1e3;
+}
 
 double small_page_fault_microseconds() {
   const long page = sysconf(_SC_PAGESIZE);

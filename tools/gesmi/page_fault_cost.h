@@ -10,4 +10,7 @@ namespace gesmi::cli {
 /// set-up and removal included). NaN where it cannot be measured (no mapping, no clock).
 double small_page_fault_microseconds();
 
+/// This thread's CPU time (user and system) in µs; NaN where the clock is missing.
+double thread_cpu_microseconds();
+
 }  // namespace gesmi::cli
