@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
 
 #include "io/format_error.h"
 #include "io/imports/csv_number.h"
@@ -63,7 +62,7 @@ void set_geodetic_gps(Mission& m) {
 double deepest(const Mission& m) {
   // The floor under the robot: its depth and altitude plus their bounds, and the
   // mine's depth band.
-  if (readings_released(m)) throw std::logic_error("deepest: the mission's navigation readings were released (MissionReadings)");
+  require_readings(m, "deepest");
   double deepest = 0.0, longest = 0.0;
   for (std::size_t k = 0; k < m.size(); ++k) {
     const double depth = m.depth[k] + (m.half_widths.depth.empty() ? depth_bound(m.model, m.depth[k]) : m.half_widths.depth[k]);

@@ -77,7 +77,7 @@ void release_after_dead_reckoning(Mission& m) {
 // `releasable`: the mission itself when its caller gave up its readings, else null.
 KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const PositionFix> fixes,
                     const KalmanOptions& o, Mission* releasable) {
-  if (readings_released(m)) throw std::logic_error("kalman_smooth: the mission's readings were released (MissionReadings)");
+  require_readings(m, "kalman_smooth");
   const std::size_t n = m.size(), k_mines = static_cast<std::size_t>(m.mine_count);
   const std::size_t q = 3 * k_mines + (o.biases ? kBiasCount : 0);
   // Without biases the odometry does not depend on the linearisation point: the dead

@@ -152,5 +152,8 @@ std::array<std::vector<double>*, 8> released_readings(Mission& mission);
 /// Whether the mission lacks some navigation readings (released by a solve or the
 /// smoother, and not put back).
 bool readings_released(const Mission& mission);
+/// Throws std::logic_error naming `caller` when readings_released(mission): for code
+/// that reads every navigation reading and cannot work without them.
+void require_readings(const Mission& mission, const char* caller);
 
 }  // namespace gesmi

@@ -50,7 +50,7 @@ double rounded_up_to_11_bits(double x) {
 }  // namespace
 
 double speed_bound(const Mission& m) {
-  if (readings_released(m)) throw std::logic_error("speed_bound: the mission's navigation readings were released (MissionReadings)");
+  require_readings(m, "speed_bound");
   // The DVL boxes of SensorBoxes::velocity(), in plain doubles: every term is
   // non-negative, so the roundings to nearest of the few operations per sample (15 at
   // most) are covered by a relative 16 units in the last place, taken at the end, and
