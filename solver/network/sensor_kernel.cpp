@@ -1,6 +1,6 @@
 // The sensor enclosures in blocks (sensor_kernel.h). This file is compiled with
-// -frounding-math (solver/CMakeLists.txt). Each block runs two passes: libm's sin and
-// cos in the caller's (round to nearest) mode, then the interval arithmetic in a
+// -frounding-math (solver/CMakeLists.txt). Each block runs two passes: libmvec's sin and
+// cos (vector_sin_cos.h) in the caller's (round to nearest) mode, then the interval arithmetic in a
 // non-inlined function between the two mode switches of UpwardRounding, where an upper
 // bound is a plain operation and a lower bound is kept negated: x lies in [-n, h] and
 // both n and h are upper bounds, computed by plain rounded-up operations.
@@ -14,6 +14,7 @@
 
 #include "solver/interval/rounding.h"
 #include "solver/interval/upward_rounding.h"
+#include "solver/model/vector_sin_cos.h"
 #include "solver/network/sensor_boxes.h"
 
 namespace gesmi {
@@ -22,13 +23,6 @@ namespace {
 constexpr std::size_t kBlock = 512;
 /// Widest angle box (half-width, rad) the narrow-angle sin/cos form takes, as sin_cos().
 constexpr double kNarrowAngle = 0.05;
-/// libm's sin and cos are taken within kLibmSteps = 4 steps of the true value (rounding.h);
-/// 4 steps from y are at most 4 ulp of the binade above |y|, so at most |y| 2^-49, plus
-/// 4 subnormal steps near zero.
-constexpr double kLibmRelative = 0x1p-49;
-constexpr double kLibmAbsolute = 0x1p-1070;
-static_assert(kLibmSteps == 4, "kLibmRelative covers 4 steps");
-
 /// x in [-n, h]; both bounds are rounded up.
 struct Bounds {
   double n, h;
@@ -47,7 +41,7 @@ inline Bounds mul(Bounds x, Bounds y) {
 }
 inline double mag(Bounds x) { return std::max(x.n, x.h); }
 
-/// One block's readings, filled in round-to-nearest mode: libm values of sin and cos of
+/// One block's readings, filled in round-to-nearest mode: libmvec's values of sin and cos of
 /// each angle reading, the angle boxes' half-widths, the velocity readings and their
 /// per-sample half-widths (when the mission gives them).
 struct BlockInputs {
@@ -55,11 +49,12 @@ struct BlockInputs {
 };
 
 /// Sine and cosine of every angle in [m - r, m + r], from s = sin m and c = cos m
-/// (libm, within kLibmSteps): sin x lies in sin m ± (|cos m| r + r²/2), and cos x in
-/// cos m ± (|sin m| r + r²/2) (Taylor with a Lagrange remainder, |sin''|, |cos''| <= 1).
+/// (libmvec, within kVectorLibmRelative |y| + kVectorLibmAbsolute of the true y): sin x
+/// lies in sin m ± (|cos m| r + r²/2), and cos x in cos m ± (|sin m| r + r²/2) (Taylor
+/// with a Lagrange remainder, |sin''|, |cos''| <= 1).
 inline void narrow_sin_cos(double s, double c, double r, Bounds& sin_box, Bounds& cos_box) {
-  const double s_error = std::fabs(s) * kLibmRelative + kLibmAbsolute;
-  const double c_error = std::fabs(c) * kLibmRelative + kLibmAbsolute;
+  const double s_error = std::fabs(s) * kVectorLibmRelative + kVectorLibmAbsolute;
+  const double c_error = std::fabs(c) * kVectorLibmRelative + kVectorLibmAbsolute;
   const double quadratic = 0.5 * (r * r);
   const double sin_spread = s_error + ((std::fabs(c) + c_error) * r + quadratic);
   const double cos_spread = c_error + ((std::fabs(s) + s_error) * r + quadratic);
@@ -117,15 +112,16 @@ void read_block(const Mission& m, const SensorModel& model, std::size_t first, s
   const double model_widths[3] = {model.roll, model.pitch, model.heading};
   const std::vector<double>* velocities[3] = {&m.vx, &m.vy, &m.vz};
   const std::vector<double>* velocity_widths[3] = {&m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz};
+  // (readings beyond kVectorLibmLargest, NaN included, are skipped below: their values
+  // do not matter)
+  for (int a = 0; a < 3; ++a) sin_cos_many(angles[a]->data() + first, n, in.sin[a].data(), in.cos[a].data());
   for (std::size_t j = 0; j < n; ++j) {
     const std::size_t k = first + j;
     bool narrow = true;
     for (int a = 0; a < 3; ++a) {
       const double angle = (*angles[a])[k];
       const double r = angle_widths[a]->empty() ? model_widths[a] : (*angle_widths[a])[k];
-      narrow = narrow && std::isfinite(angle) && r >= 0.0 && r <= kNarrowAngle;
-      in.sin[a][j] = std::sin(angle);
-      in.cos[a][j] = std::cos(angle);
+      narrow = narrow && std::fabs(angle) < kVectorLibmLargest && r >= 0.0 && r <= kNarrowAngle;
       in.radius[a][j] = r;
     }
     for (int i = 0; i < 3; ++i) {

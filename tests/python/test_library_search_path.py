@@ -7,7 +7,7 @@ import sys
 
 from conftest import GESMI
 
-LIBRARIES = ("libc.so.6", "libm.so.6", "libhdf5_serial.so.103", "libstdc++.so.6")
+LIBRARIES = ("libc.so.6", "libm.so.6", "libmvec.so.1", "libhdf5_serial.so.103", "libstdc++.so.6")
 
 
 def folder_of_impostors(path):

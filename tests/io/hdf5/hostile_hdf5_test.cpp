@@ -382,8 +382,10 @@ TEST(HostileHdf5, FormatFiveResultsAreCheckedWithTheirSha256) {
 
 TEST(HostileHdf5, AFormatFiveResultWarmStartsAsItsFormatSixTwin) {
   // The mission's fingerprints are computed as SHA-256 for it: the same rerun as from a
-  // result of today's format, bitwise (no mark added: what is checked is the comparison
-  // of the fingerprints).
+  // result of today's format (no mark added: what is checked is the comparison of the
+  // fingerprints). The same to within 1e-9 m, not bitwise: a rerun keeps the earlier
+  // result's increments, and the file's were computed before the sensor kernel took
+  // libmvec's sines with their wider margin (docs/performance.md), 5e-15 m a step.
   const std::string folder = test::temp_folder("hostile-warm-5");
   const std::string mission = format_5_file("mission.h5"), five = format_5_file("result-format5.h5");
   ASSERT_EQ(test::run_gesmi({"solve", mission, "-o", folder + "/r6.h5"}).exit_code, 0);
@@ -407,8 +409,8 @@ TEST(HostileHdf5, AFormatFiveResultWarmStartsAsItsFormatSixTwin) {
   for (const auto& [x, y] : {std::pair{&a.px, &b.px}, std::pair{&a.py, &b.py}, std::pair{&a.pz, &b.pz}}) {
     ASSERT_EQ(x->size(), y->size());
     for (std::size_t k = 0; k < x->size(); ++k) {
-      EXPECT_EQ((*x)[k].lo(), (*y)[k].lo());
-      EXPECT_EQ((*x)[k].hi(), (*y)[k].hi());
+      EXPECT_NEAR((*x)[k].lo(), (*y)[k].lo(), 1e-9);
+      EXPECT_NEAR((*x)[k].hi(), (*y)[k].hi(), 1e-9);
     }
   }
   // Another mission is still refused: the SHA-256 fingerprints are compared.
