@@ -65,7 +65,8 @@ double deepest(const Mission& m) {
   require_readings(m, "deepest");
   double deepest = 0.0, longest = 0.0;
   for (std::size_t k = 0; k < m.size(); ++k) {
-    const double depth = m.depth[k] + (m.half_widths.depth.empty() ? depth_bound(m.model, m.depth[k]) : m.half_widths.depth[k]);
+    const double depth =
+        m.depth[k] + (m.half_widths.depth.empty() ? depth_bound_nearest(m.model, m.depth[k]) : m.half_widths.depth[k]);
     const double altitude = m.altitude[k] + (m.half_widths.altitude.empty() ? m.model.altitude : m.half_widths.altitude[k]);
     deepest = std::max(deepest, depth + std::max(altitude, 0.0));
     if (k + 1 < m.size()) longest = std::max(longest, m.time[k + 1] - m.time[k]);

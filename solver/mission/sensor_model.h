@@ -3,6 +3,7 @@
 // mission's values as defaults (../shared/reference/redermor.md). Stored with every
 // mission and readable from YAML (docs/formats.md documents each key).
 
+#include <cmath>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -69,6 +70,12 @@ struct SensorModel {
 /// A depth reading's bound, depth_absolute + depth_relative |depth|, rounded up: the one
 /// formula for the solver's boxes and the importers' per-sample half-widths.
 double depth_bound(const SensorModel& model, double depth);
+/// The same formula rounded to nearest, for a sum that carries its own relative margin
+/// (io's deepest(), over every sample: directed rounding there was a fused
+/// multiply-add call per sample, 1 % of a warm rerun).
+inline double depth_bound_nearest(const SensorModel& model, double depth) {
+  return model.depth_absolute + model.depth_relative * std::fabs(depth);
+}
 
 /// One numeric field of the sensor model: its key (the HDF5 /model attribute, the YAML
 /// key, the docs/formats.md row), the member, its unit and meaning, and the mission
