@@ -217,13 +217,13 @@ double farther(double a, double b) {
 class MarginsAtDistance {
  public:
   explicit MarginsAtDistance(const Mission& mission)
-      : latitude_(mission.origin.latitude),
+      : convergence_(mission.origin.latitude),
         zone_heading_(mission.heading_frame_margin),
         zone_scale_(mission.frame_scale_margin) {}
   void take(double farthest, float& heading, float& scale, double& beyond_zone) {
     const double distance = rounded_up_to_11_bits(farthest);
     if (!(distance == last_)) {
-      const double h = meridian_convergence_within(latitude_, distance);
+      const double h = convergence_.within(distance);
       const double s = frame_scale_within(distance);
       // (capped also when unbounded there: inf, NaN)
       heading_ = float_up(h <= zone_heading_ ? h : zone_heading_);
@@ -238,7 +238,8 @@ class MarginsAtDistance {
   }
 
  private:
-  double latitude_, zone_heading_, zone_scale_;
+  MeridianConvergence convergence_;
+  double zone_heading_, zone_scale_;
   double last_ = std::numeric_limits<double>::quiet_NaN();
   float heading_ = 0.0f, scale_ = 0.0f;
   bool beyond_ = false;
