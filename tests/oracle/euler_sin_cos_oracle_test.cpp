@@ -9,8 +9,6 @@
 // few-ulp intervals, and ordinary random ones. Halving the remainder, or removing
 // the libm steps, leaves the exact value outside at the extrema.
 
-#include <mpfr.h>
-
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -21,26 +19,14 @@
 #include <vector>
 
 #include "solver/model/euler.h"
+#include "tests/oracle/mpfr_number.h"
 
 namespace gesmi {
 namespace {
 
-constexpr mpfr_prec_t kPrecision = 128;
 constexpr std::uint64_t kSeed = 0x65756c6572ULL;  // "euler"
 
-class Mpfr {
- public:
-  Mpfr() { mpfr_init2(x_, kPrecision); }
-  Mpfr(const Mpfr&) = delete;
-  Mpfr& operator=(const Mpfr&) = delete;
-  ~Mpfr() { mpfr_clear(x_); }
-  operator mpfr_ptr() { return x_; }  // NOLINT: reads like the C API
-  double down() { return mpfr_get_d(x_, MPFR_RNDD); }
-  double up() { return mpfr_get_d(x_, MPFR_RNDU); }
-
- private:
-  mpfr_t x_;
-};
+using Mpfr = oracle::MpfrNumber;
 
 // The exact sin or cos of the double x, rounded outward to doubles.
 Interval exact_at(double x, bool cosine) {

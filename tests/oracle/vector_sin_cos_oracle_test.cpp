@@ -9,8 +9,6 @@
 // AVX2) and in calls of three (two lanes, then the odd one). Making the margin half an
 // ulp (0x1p-54) fails this test at most of the points.
 
-#include <mpfr.h>
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,24 +18,14 @@
 #include <vector>
 
 #include "solver/model/vector_sin_cos.h"
+#include "tests/oracle/mpfr_number.h"
 
 namespace gesmi {
 namespace {
 
-constexpr mpfr_prec_t kPrecision = 128;
 constexpr std::uint64_t kSeed = 0x6c69626d766563ULL;  // "libmvec"
 
-class Mpfr {
- public:
-  Mpfr() { mpfr_init2(x_, kPrecision); }
-  Mpfr(const Mpfr&) = delete;
-  Mpfr& operator=(const Mpfr&) = delete;
-  ~Mpfr() { mpfr_clear(x_); }
-  operator mpfr_ptr() { return x_; }  // NOLINT: reads like the C API
-
- private:
-  mpfr_t x_;
-};
+using Mpfr = oracle::MpfrNumber;
 
 std::string hex(double x) {
   char b[40];
