@@ -19,8 +19,8 @@ double meridian_convergence_within(double origin_latitude, double distance);
 /// the origin's latitude taken once: within 12.6 km (an angle a <= 0.002 rad from the
 /// Earth's centre) tan(latitude + a) is bounded by the addition formula with
 /// a (1 + a^2/3 + a^4/3) >= tan a, and the few roundings by 2^-40 relative; farther out,
-/// the same as meridian_convergence_within(). Never below the bound that stands for, at
-/// most 1e-11 relative above it (tests/solver/mission/meridian_convergence_test.cpp,
+/// the same as meridian_convergence_within(). Never below that function, at most 1e-11
+/// relative above its formula (tests/solver/mission/meridian_convergence_test.cpp,
 /// against long double).
 class MeridianConvergence {
  public:

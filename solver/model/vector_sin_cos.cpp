@@ -2,7 +2,6 @@
 
 #include <immintrin.h>
 
-
 // libmvec's entry points, named by the x86_64 vector function ABI: `b` two lanes of
 // SSE2 (every x86_64 processor), `d` four lanes of AVX2; `N` unmasked, `v` a vector
 // argument. glibc resolves each to its best variant for the processor at load.

@@ -1,9 +1,10 @@
 // The sensor enclosures in blocks (sensor_kernel.h). This file is compiled with
-// -frounding-math (solver/CMakeLists.txt). Each block runs two passes: libmvec's sin and
-// cos (vector_sin_cos.h) in the caller's (round to nearest) mode, then the interval arithmetic in a
-// non-inlined function between the two mode switches of UpwardRounding, where an upper
-// bound is a plain operation and a lower bound is kept negated: x lies in [-n, h] and
-// both n and h are upper bounds, computed by plain rounded-up operations.
+// -frounding-math (solver/CMakeLists.txt). Each block runs two passes: libmvec's sin
+// and cos (vector_sin_cos.h) in the caller's (round to nearest) mode, then the
+// interval arithmetic in a non-inlined function between the two mode switches of
+// UpwardRounding, where an upper bound is a plain operation and a lower bound is kept
+// negated: x lies in [-n, h] and both n and h are upper bounds, computed by plain
+// rounded-up operations.
 
 #include "solver/network/sensor_kernel.h"
 
