@@ -20,10 +20,10 @@
 #include <vector>
 
 #include "solver/interval/interval.h"
+#include "tests/oracle/mpfr_number.h"  // kPrecision
 
 namespace gesmi::oracle {
 
-inline constexpr mpfr_prec_t kPrecision = 128;  // far beyond double: the oracle's own error is negligible
 inline constexpr std::uint64_t kSeed = 0x6765736d69ULL;  // "gesmi"
 inline constexpr int kCases = 100000;                    // per operation
 

@@ -1,15 +1,15 @@
 #pragma once
-// An RAII MPFR number at 128 bits for the oracle tests that compare doubles with MPFR's
-// sin and cos (euler_sin_cos_oracle_test, vector_sin_cos_oracle_test): far beyond
-// double, so that the oracle's own error is negligible.
+// The oracle tests' precision, and an RAII MPFR number at it for those that compare
+// doubles with MPFR's sin and cos (euler_sin_cos_oracle_test, vector_sin_cos_oracle_test).
 
 #include <mpfr.h>
 
 namespace gesmi::oracle {
 
+inline constexpr mpfr_prec_t kPrecision = 128;  // far beyond double: the oracle's own error is negligible
+
 class MpfrNumber {
  public:
-  static constexpr mpfr_prec_t kPrecision = 128;
   MpfrNumber() { mpfr_init2(x_, kPrecision); }
   MpfrNumber(const MpfrNumber&) = delete;
   MpfrNumber& operator=(const MpfrNumber&) = delete;
