@@ -16,6 +16,7 @@
 #include <span>
 
 #include "solver/interval/interval.h"
+#include "solver/tube/steps_to_sweep.h"
 
 namespace gesmi {
 
@@ -50,6 +51,16 @@ ChainsSweepResult chains_forward(const std::array<std::span<Interval>, 3>& x,
                                  const std::array<std::span<const Interval>, 3>& v);
 ChainsSweepResult chains_backward(const std::array<std::span<Interval>, 3>& x,
                                   const std::array<std::span<Interval>, 3>& v);
+
+/// The same sweeps over the steps `steps` marks (steps_to_sweep.h) and those a change
+/// carries into, clearing their marks and marking for the other direction what they
+/// narrow: the same bounds, result and first emptied chain as the sweeps above when
+/// every narrowing of a position between sweeps was told to `steps`
+/// (std::invalid_argument if `steps` is for another number of samples).
+ChainsSweepResult chains_forward(const std::array<std::span<Interval>, 3>& x,
+                                 const std::array<std::span<const Interval>, 3>& v, StepsToSweep& steps);
+ChainsSweepResult chains_backward(const std::array<std::span<Interval>, 3>& x,
+                                  const std::array<std::span<Interval>, 3>& v, StepsToSweep& steps);
 
 /// Work-list spreads: from x(from) forward (or backward), stopping after the first
 /// step whose bounds moved by no more than stop_below (a domain that no longer

@@ -9,6 +9,9 @@
 // empty result (lo > hi) stops the sweep and is normalised by the caller.
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
 #include <type_traits>
 
 #include "solver/interval/upward_rounding.h"
@@ -133,6 +136,122 @@ struct ChainArrays {
     if (empty_now != 0) {
       emptied = empty_now;
       return k;
+    }
+  }
+  for (int a = 0; a < kChains; ++a) max_shrink[a] = shrink[a];
+  return SweepResult::kNone;
+}
+
+// The joint loops over the steps StepsToSweep marks (steps_to_sweep.h): from each
+// marked step, a run of the same operations as the loops above goes on while it narrows
+// a position (that carries into the next step) or reaches a marked step; between runs,
+// memchr finds the next mark. A step taken clears its mark; a narrowed position marks
+// the steps of the other direction that read it.
+
+// The first marked step at or after `from` (of `steps`), or `steps`.
+std::size_t next_marked(const std::uint8_t* marks, std::size_t from, std::size_t steps) {
+  if (from >= steps) return steps;
+  const void* found = std::memchr(marks + from, 1, steps - from);
+  return found ? static_cast<std::size_t>(static_cast<const std::uint8_t*>(found) - marks) : steps;
+}
+
+// One past the last marked step before `end`, or 0.
+std::size_t end_of_marked(const std::uint8_t* marks, std::size_t end) {
+  if (end == 0) return 0;
+  const void* found = memrchr(marks, 1, end);
+  return found ? static_cast<std::size_t>(static_cast<const std::uint8_t*>(found) - marks) + 1 : 0;
+}
+
+[[gnu::noinline]] std::size_t marked_forward_loop3(const ChainArrays<const Interval>& c, std::size_t n,
+                                                   std::uint8_t* take, std::uint8_t* take_backward,
+                                                   double (&max_shrink)[kChains], unsigned& emptied) {
+  Interval* x[kChains] = {c.x[0], c.x[1], c.x[2]};
+  const Interval* v[kChains] = {c.v[0], c.v[1], c.v[2]};
+  double shrink[kChains] = {0.0, 0.0, 0.0};
+  const std::size_t steps = n - 1;
+  for (std::size_t k = next_marked(take, 0, steps); k < steps; k = next_marked(take, k, steps)) {
+    double neg_lo[kChains], hi[kChains];
+    for (int a = 0; a < kChains; ++a) {
+      neg_lo[a] = -x[a][k].lo();
+      hi[a] = x[a][k].hi();
+    }
+    for (;;) {
+      take[k] = 0;
+      unsigned empty_now = 0;
+      bool narrowed = false;
+#pragma GCC unroll 3
+      for (int a = 0; a < kChains; ++a) {
+        const Interval old = x[a][k + 1];
+        neg_lo[a] = std::min(-old.lo(), neg_lo[a] - v[a][k].lo());
+        hi[a] = std::min(old.hi(), hi[a] + v[a][k].hi());
+        x[a][k + 1] = Interval::from_bounds(-neg_lo[a], hi[a]);
+        shrink[a] = std::max(shrink[a], std::max(-neg_lo[a] - old.lo(), old.hi() - hi[a]));
+        narrowed |= (-neg_lo[a] != old.lo()) | (hi[a] != old.hi());
+        empty_now |= static_cast<unsigned>(!(-neg_lo[a] <= hi[a])) << a;
+      }
+      if (empty_now != 0) {
+        emptied = empty_now;
+        return k + 1;
+      }
+      ++k;
+      if (narrowed) {  // x(k) now: backward steps k - 1 and k read it (step `steps`: the spare)
+        take_backward[k - 1] = 1;
+        take_backward[k] = 1;
+      }
+      if (k == steps || !(narrowed || take[k])) break;
+    }
+  }
+  for (int a = 0; a < kChains; ++a) max_shrink[a] = shrink[a];
+  return SweepResult::kNone;
+}
+
+[[gnu::noinline]] std::size_t marked_backward_loop3(const ChainArrays<Interval>& c, std::size_t n,
+                                                    std::uint8_t* take, std::uint8_t* take_forward,
+                                                    double (&max_shrink)[kChains], unsigned& emptied) {
+  Interval* x[kChains] = {c.x[0], c.x[1], c.x[2]};
+  Interval* v[kChains] = {c.v[0], c.v[1], c.v[2]};
+  double shrink[kChains] = {0.0, 0.0, 0.0};
+  for (std::size_t end = end_of_marked(take, n - 1); end > 0; end = end_of_marked(take, end)) {
+    std::size_t k = end - 1;
+    double neg_lo[kChains], hi[kChains];
+    for (int a = 0; a < kChains; ++a) {
+      neg_lo[a] = -x[a][k + 1].lo();
+      hi[a] = x[a][k + 1].hi();
+    }
+    for (;;) {
+      take[k] = 0;
+      unsigned empty_now = 0;
+      bool narrowed = false, step_narrowed = false;
+#pragma GCC unroll 3
+      for (int a = 0; a < kChains; ++a) {
+        const double next_neg_lo = neg_lo[a], next_hi = hi[a];
+        const Interval old = x[a][k];
+        const Interval step = v[a][k];
+        neg_lo[a] = std::min(-old.lo(), next_neg_lo + step.hi());
+        hi[a] = std::min(old.hi(), next_hi - step.lo());
+        x[a][k] = Interval::from_bounds(-neg_lo[a], hi[a]);
+        shrink[a] = std::max(shrink[a], std::max(-neg_lo[a] - old.lo(), old.hi() - hi[a]));
+        const double step_lo = std::max(step.lo(), -(hi[a] + next_neg_lo));
+        const double step_hi = std::min(step.hi(), next_hi + neg_lo[a]);
+        v[a][k] = Interval::from_bounds(step_lo, step_hi);
+        narrowed |= (-neg_lo[a] != old.lo()) | (hi[a] != old.hi());
+        step_narrowed |= (step_lo != step.lo()) | (step_hi != step.hi());
+        empty_now |= static_cast<unsigned>(!(-neg_lo[a] <= hi[a]) || !(step_lo <= step_hi)) << a;
+      }
+      if (empty_now != 0) {
+        emptied = empty_now;
+        return k;
+      }
+      if (narrowed || step_narrowed) take_forward[k] = 1;  // forward step k reads x(k) and v(k)
+      if (k == 0) {
+        end = 0;
+        break;
+      }
+      --k;
+      if (!(narrowed || take[k])) {  // (a narrowed x(k + 1) carries into step k)
+        end = k + 1;
+        break;
+      }
     }
   }
   for (int a = 0; a < kChains; ++a) max_shrink[a] = shrink[a];
@@ -361,6 +480,61 @@ ChainsSweepResult chains_backward(const std::array<std::span<Interval>, 3>& x, c
     return full_backward_loop(c.x[a], c.v[a], at + 1, rest_shrink);
   };
   return sweep_together(x, v, backward_loop3, alone, 0);
+}
+
+namespace {
+
+void require_steps_for(const std::array<std::span<Interval>, kChains>& x, const StepsToSweep& steps) {
+  if (steps.samples() != x[0].size())
+    throw std::invalid_argument("chains_forward/chains_backward: the marked steps are for another tube");
+}
+
+}  // namespace
+
+ChainsSweepResult chains_forward(const std::array<std::span<Interval>, 3>& x,
+                                 const std::array<std::span<const Interval>, 3>& v, StepsToSweep& steps) {
+  require_steps_for(x, steps);
+  bool together = same_lengths(x, v);
+  for (int a = 0; together && a < kChains; ++a) together = !x[a][0].is_empty();
+  if (!together) {  // (lengths the joint loop does not take: every step, then all marked)
+    const ChainsSweepResult r = chains_forward(x, v);
+    steps.mark_all();
+    return r;
+  }
+  const std::size_t n = x[0].size();
+  const auto alone = [n](const ChainArrays<const Interval>& c, int a, std::size_t at) {
+    double rest_shrink;
+    const std::size_t e = full_forward_loop(c.x[a] + at, c.v[a] + at, n - at, rest_shrink);
+    return e == SweepResult::kNone ? e : at + e;
+  };
+  const auto marked = [&steps](const ChainArrays<const Interval>& c, std::size_t samples, double (&shrink)[kChains],
+                               unsigned& emptied) {
+    return marked_forward_loop3(c, samples, steps.forward(), steps.backward(), shrink, emptied);
+  };
+  const ChainsSweepResult r = sweep_together(x, v, marked, alone, n - 1);
+  if (!r.consistent()) steps.mark_all();  // (the run stopped with marks half cleared)
+  return r;
+}
+
+ChainsSweepResult chains_backward(const std::array<std::span<Interval>, 3>& x, const std::array<std::span<Interval>, 3>& v,
+                                  StepsToSweep& steps) {
+  require_steps_for(x, steps);
+  if (!same_lengths(x, v)) {
+    const ChainsSweepResult r = chains_backward(x, v);
+    steps.mark_all();
+    return r;
+  }
+  const auto alone = [](const ChainArrays<Interval>& c, int a, std::size_t at) {
+    double rest_shrink;
+    return full_backward_loop(c.x[a], c.v[a], at + 1, rest_shrink);
+  };
+  const auto marked = [&steps](const ChainArrays<Interval>& c, std::size_t samples, double (&shrink)[kChains],
+                               unsigned& emptied) {
+    return marked_backward_loop3(c, samples, steps.backward(), steps.forward(), shrink, emptied);
+  };
+  const ChainsSweepResult r = sweep_together(x, v, marked, alone, 0);
+  if (!r.consistent()) steps.mark_all();  // (the run stopped with marks half cleared)
+  return r;
 }
 
 }  // namespace gesmi

@@ -3,6 +3,7 @@
 namespace gesmi::detail {
 
 std::optional<double> MissionPropagation::sweep(std::optional<Inconsistency>& failure) {
+  if (!steps_) steps_.emplace(d_.px.size());
   double move = 0.0;
   if (!chains(true, move, failure) || !sparse(move, failure) || !chains(false, move, failure) ||
       !sparse(move, failure))
@@ -13,9 +14,12 @@ std::optional<double> MissionPropagation::sweep(std::optional<Inconsistency>& fa
 bool MissionPropagation::chains(bool forward, double& move, std::optional<Inconsistency>& failure) {
   const std::array<std::span<Interval>, 3> p{d_.px, d_.py, d_.pz};
   const ChainsSweepResult r =
-      forward ? chains_forward(p, {std::span<const Interval>(d_.dx), std::span<const Interval>(d_.dy),
-                                   std::span<const Interval>(d_.dz)})
-              : chains_backward(p, {std::span<Interval>(d_.dx), std::span<Interval>(d_.dy), std::span<Interval>(d_.dz)});
+      forward ? chains_forward(p,
+                               {std::span<const Interval>(d_.dx), std::span<const Interval>(d_.dy),
+                                std::span<const Interval>(d_.dz)},
+                               *steps_)
+              : chains_backward(p, {std::span<Interval>(d_.dx), std::span<Interval>(d_.dy), std::span<Interval>(d_.dz)},
+                                *steps_);
   if (!r.consistent()) {
     failure = evolution_failure(r.chain, r.sweep.first_empty, forward);
     return false;
@@ -73,11 +77,19 @@ bool MissionPropagation::anchor(const Anchor& a, double& move, std::optional<Inc
     failure = inc;
     return false;
   }
+  narrowed_at(a.at);
   move = std::max(move, largest_move(before, q));
   return true;
 }
 
+void MissionPropagation::narrowed_at(const TimeLocation& at) {
+  if (!steps_) return;
+  steps_->narrowed(at.k);
+  if (!at.on_grid) steps_->narrowed(at.k + 1);
+}
+
 bool MissionPropagation::spread(std::size_t k, double stop_below, std::size_t& first, std::size_t& last, std::optional<Inconsistency>& failure) {
+  steps_.reset();  // (spreads narrow without marking: a later sweep takes every step)
   first = last = k;
   for (int axis = 0; axis < 3; ++axis) {
     std::vector<Interval>& p = *positions()[axis];
@@ -135,6 +147,7 @@ bool MissionPropagation::detection(std::size_t j, double& move, std::optional<In
     failure = detection_failure(det, first, q_before, d_.mines[static_cast<std::size_t>(first)]);
     return false;
   }
+  narrowed_at(det.at);
   move = std::max(move, largest_move(q_before, q));
   return true;
 }

@@ -14,6 +14,7 @@
 #include "solver/network/mission_network.h"
 #include "solver/network/mission_solver.h"
 #include "solver/tube/chain_sweep.h"
+#include "solver/tube/steps_to_sweep.h"
 
 namespace gesmi::detail {
 
@@ -29,13 +30,14 @@ class MissionPropagation {
   MissionPropagation(const MissionNetwork& net, TubeDomains& d) : net_(net), d_(d) {}
 
   // One forward-backward sweep; returns the largest bound move, or nullopt and
-  // sets the inconsistency when a domain became empty.
+  // sets the inconsistency when a domain became empty. The chains' steps that nothing
+  // narrowed since the last sweep are left out (steps_to_sweep.h): the same bounds.
   std::optional<double> sweep(std::optional<Inconsistency>& failure);
 
   std::array<std::vector<Interval>*, 3> positions() { return {&d_.px, &d_.py, &d_.pz}; }
   std::array<std::vector<Interval>*, 3> increments() { return {&d_.dx, &d_.dy, &d_.dz}; }
 
-  // The three chains swept in one direction.
+  // The three chains swept in one direction, over the steps to sweep.
   bool chains(bool forward, double& move, std::optional<Inconsistency>& failure);
 
   // The chain emptied p(k) (forward: coming from k - 1; backward: from k + 1): the
@@ -68,8 +70,14 @@ class MissionPropagation {
   Inconsistency detection_failure(const Detection& det, int mine, const Vec3I& q, const Vec3I& m) const;
 
  private:
+  // A fix or detection narrowed the tube at this time: the chains' steps that read it.
+  void narrowed_at(const TimeLocation& at);
+
   const MissionNetwork& net_;
   TubeDomains& d_;
+  // The steps the next sweeps must take; made by the first sweep (the work-list rerun
+  // spreads instead, and drops them).
+  std::optional<StepsToSweep> steps_;
 };
 
 }  // namespace gesmi::detail
