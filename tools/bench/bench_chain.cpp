@@ -59,9 +59,11 @@ void BM_ChainBackwardPortable(benchmark::State& s) {
   backward<gesmi::chain_forward_portable, gesmi::chain_backward_portable>(s);
 }
 
-// The three chains of a tube: one after the other, and together (chains_forward,
-// chains_backward), one forward and one backward sweep each.
-template <bool Together>
+// The three chains of a tube: one after the other, together (chains_forward,
+// chains_backward), and together over marked steps with every step marked (what the first
+// sweep of a solve does), one forward and one backward sweep each.
+enum class Sweeps { one_by_one, together, all_marked };
+template <Sweeps How>
 void three_chains(benchmark::State& state) {
   const std::size_t n = static_cast<std::size_t>(state.range(0));
   Chain a(n), b(n), c(n);
@@ -72,7 +74,13 @@ void three_chains(benchmark::State& state) {
     state.PauseTiming();
     for (Chain* chain : {&a, &b, &c}) std::fill(chain->x.begin() + 1, chain->x.end() - 1, Interval::entire());
     state.ResumeTiming();
-    if constexpr (Together) {
+    if constexpr (How == Sweeps::all_marked) {
+      state.PauseTiming();
+      gesmi::StepsToSweep steps(n);
+      state.ResumeTiming();
+      benchmark::DoNotOptimize(gesmi::chains_forward(x, v_const, steps));
+      benchmark::DoNotOptimize(gesmi::chains_backward(x, v, steps));
+    } else if constexpr (How == Sweeps::together) {
       benchmark::DoNotOptimize(gesmi::chains_forward(x, v_const));
       benchmark::DoNotOptimize(gesmi::chains_backward(x, v));
     } else {
@@ -84,12 +92,14 @@ void three_chains(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * 3 * (n - 1)));
 }
 
-void BM_ThreeChainsOneByOne(benchmark::State& s) { three_chains<false>(s); }
-void BM_ThreeChainsTogether(benchmark::State& s) { three_chains<true>(s); }
+void BM_ThreeChainsOneByOne(benchmark::State& s) { three_chains<Sweeps::one_by_one>(s); }
+void BM_ThreeChainsTogether(benchmark::State& s) { three_chains<Sweeps::together>(s); }
+void BM_ThreeChainsAllMarked(benchmark::State& s) { three_chains<Sweeps::all_marked>(s); }
 
 BENCHMARK(BM_ChainForward)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ThreeChainsOneByOne)->Arg(60000)->Arg(kSteps)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ThreeChainsTogether)->Arg(60000)->Arg(kSteps)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ThreeChainsAllMarked)->Arg(60000)->Arg(kSteps)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ChainForwardPortable)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ChainBackward)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ChainBackwardPortable)->Unit(benchmark::kMillisecond);
