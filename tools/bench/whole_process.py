@@ -21,6 +21,9 @@ after a pause (docs/performance.md, "The heap back in small pages").
 command of the two is run in turn (A B A B ..., after one pair not counted), each in its
 own folder on the same mission, and the ratio A/B of each pair's CPU time is printed
 with the medians (its median, then its range: a wide range says the machine was noisy).
+Copy both binaries into one folder first: one run from the build tree it was linked in
+started up to a tenth slower than its copy here (docs/performance.md, "Paired runs need
+both binaries in one folder"); the commands a change does not touch should give about 1.
 """
 import argparse
 import os
