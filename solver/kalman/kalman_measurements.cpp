@@ -24,7 +24,7 @@ Mat3d rotation(double roll, double pitch, double heading, double heading_bias) {
 }
 
 // The rotations of the samples in order, their sines and cosines from libmvec a block at
-// a time (vector_sin_cos.h): glibc's scalar sincos was 4 % of the smoother at 10^6 steps.
+// a time (vector_sin_cos.h): glibc's scalar sincos was 3-4 % of the smoother at 10^6 steps.
 // Within 4 ulps of libm's (glibc's tested bound), far below the smoother's own rounding;
 // angles beyond kVectorLibmLargest take libm's.
 class SampleRotations {

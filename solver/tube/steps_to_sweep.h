@@ -31,7 +31,8 @@ class StepsToSweep {
 
   /// Sample k's position was narrowed on some chain outside the sweeps.
   void narrowed(std::size_t k);
-  /// Every step marked both ways again (after a sweep that took them all unmarked).
+  /// Every step marked both ways again: after a sweep that kept no marks (one over every
+  /// step, or one that stopped at an empty domain with its marks half cleared).
   void mark_all();
 
   std::size_t samples() const { return samples_; }
