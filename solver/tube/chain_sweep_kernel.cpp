@@ -73,6 +73,39 @@ struct ChainArrays {
   return SweepResult::kNone;
 }
 
+// One chain's step of the joint loops below, full or over marked steps (one piece of
+// code for both). Forward: x(k+1) := x(k+1) ∩ (x(k) + v(k)), x(k) carried as (-lo, hi),
+// which become x(k+1)'s. Returns whether x(k+1) moved; `empty` when it emptied.
+[[gnu::always_inline]] inline bool forward_step(double& neg_lo, double& hi, Interval& next, const Interval& step,
+                                                double& shrink, bool& empty) {
+  const Interval old = next;
+  neg_lo = std::min(-old.lo(), neg_lo - step.lo());  // -max(lo', RD(lo + v.lo))
+  hi = std::min(old.hi(), hi + step.hi());           // min(hi', RU(hi + v.hi))
+  next = Interval::from_bounds(-neg_lo, hi);
+  shrink = std::max(shrink, std::max(-neg_lo - old.lo(), old.hi() - hi));
+  empty = !(-neg_lo <= hi);
+  return (-neg_lo != old.lo()) | (hi != old.hi());
+}
+
+// Backward: x(k) := x(k) ∩ (x(k+1) - v(k)) then v(k) := v(k) ∩ (x(k+1) - x(k)), x(k+1)
+// carried as (-lo, hi), which become x(k)'s. Sets whether x(k) and v(k) moved, and
+// `empty` when either emptied.
+[[gnu::always_inline]] inline void backward_step(double& neg_lo, double& hi, Interval& here, Interval& step,
+                                                 double& shrink, bool& empty, bool& here_moved, bool& step_moved) {
+  const double next_neg_lo = neg_lo, next_hi = hi;
+  const Interval old = here, old_step = step;
+  neg_lo = std::min(-old.lo(), next_neg_lo + old_step.hi());  // -max(lo, RD(next.lo - v.hi))
+  hi = std::min(old.hi(), next_hi - old_step.lo());           // min(hi, RU(next.hi - v.lo))
+  here = Interval::from_bounds(-neg_lo, hi);
+  shrink = std::max(shrink, std::max(-neg_lo - old.lo(), old.hi() - hi));
+  const double step_lo = std::max(old_step.lo(), -(hi + next_neg_lo));  // RD(next.lo - hi)
+  const double step_hi = std::min(old_step.hi(), next_hi + neg_lo);      // RU(next.hi - lo)
+  step = Interval::from_bounds(step_lo, step_hi);
+  empty = !(-neg_lo <= hi) || !(step_lo <= step_hi);
+  here_moved = (-neg_lo != old.lo()) | (hi != old.hi());
+  step_moved = (step_lo != old_step.lo()) | (step_hi != old_step.hi());
+}
+
 // The three chains of a tube swept in one loop: the same operations, chain by chain,
 // as the loops above, but the three chains' loop-carried dependencies overlap (each
 // chain's narrowing tracked apart, so that no dependency runs across them). Stops at
@@ -91,12 +124,9 @@ struct ChainArrays {
     unsigned empty_now = 0;
 #pragma GCC unroll 3
     for (int a = 0; a < kChains; ++a) {
-      const Interval old = x[a][k + 1];
-      neg_lo[a] = std::min(-old.lo(), neg_lo[a] - v[a][k].lo());
-      hi[a] = std::min(old.hi(), hi[a] + v[a][k].hi());
-      x[a][k + 1] = Interval::from_bounds(-neg_lo[a], hi[a]);
-      shrink[a] = std::max(shrink[a], std::max(-neg_lo[a] - old.lo(), old.hi() - hi[a]));
-      empty_now |= static_cast<unsigned>(!(-neg_lo[a] <= hi[a])) << a;
+      bool empty;
+      forward_step(neg_lo[a], hi[a], x[a][k + 1], v[a][k], shrink[a], empty);
+      empty_now |= static_cast<unsigned>(empty) << a;
     }
     if (empty_now != 0) {
       emptied = empty_now;
@@ -121,17 +151,9 @@ struct ChainArrays {
     unsigned empty_now = 0;
 #pragma GCC unroll 3
     for (int a = 0; a < kChains; ++a) {
-      const double next_neg_lo = neg_lo[a], next_hi = hi[a];
-      const Interval old = x[a][k];
-      const Interval step = v[a][k];
-      neg_lo[a] = std::min(-old.lo(), next_neg_lo + step.hi());  // -max(lo, RD(next.lo - v.hi))
-      hi[a] = std::min(old.hi(), next_hi - step.lo());           // min(hi, RU(next.hi - v.lo))
-      x[a][k] = Interval::from_bounds(-neg_lo[a], hi[a]);
-      shrink[a] = std::max(shrink[a], std::max(-neg_lo[a] - old.lo(), old.hi() - hi[a]));
-      const double step_lo = std::max(step.lo(), -(hi[a] + next_neg_lo));  // RD(next.lo - hi)
-      const double step_hi = std::min(step.hi(), next_hi + neg_lo[a]);      // RU(next.hi - lo)
-      v[a][k] = Interval::from_bounds(step_lo, step_hi);
-      empty_now |= static_cast<unsigned>(!(-neg_lo[a] <= hi[a]) || !(step_lo <= step_hi)) << a;
+      bool empty, here_moved, step_moved;
+      backward_step(neg_lo[a], hi[a], x[a][k], v[a][k], shrink[a], empty, here_moved, step_moved);
+      empty_now |= static_cast<unsigned>(empty) << a;
     }
     if (empty_now != 0) {
       emptied = empty_now;
@@ -181,13 +203,9 @@ std::size_t end_of_marked(const std::uint8_t* marks, std::size_t end) {
       bool narrowed = false;
 #pragma GCC unroll 3
       for (int a = 0; a < kChains; ++a) {
-        const Interval old = x[a][k + 1];
-        neg_lo[a] = std::min(-old.lo(), neg_lo[a] - v[a][k].lo());
-        hi[a] = std::min(old.hi(), hi[a] + v[a][k].hi());
-        x[a][k + 1] = Interval::from_bounds(-neg_lo[a], hi[a]);
-        shrink[a] = std::max(shrink[a], std::max(-neg_lo[a] - old.lo(), old.hi() - hi[a]));
-        narrowed |= (-neg_lo[a] != old.lo()) | (hi[a] != old.hi());
-        empty_now |= static_cast<unsigned>(!(-neg_lo[a] <= hi[a])) << a;
+        bool empty;
+        narrowed |= forward_step(neg_lo[a], hi[a], x[a][k + 1], v[a][k], shrink[a], empty);
+        empty_now |= static_cast<unsigned>(empty) << a;
       }
       if (empty_now != 0) {
         emptied = empty_now;
@@ -224,19 +242,11 @@ std::size_t end_of_marked(const std::uint8_t* marks, std::size_t end) {
       bool narrowed = false, step_narrowed = false;
 #pragma GCC unroll 3
       for (int a = 0; a < kChains; ++a) {
-        const double next_neg_lo = neg_lo[a], next_hi = hi[a];
-        const Interval old = x[a][k];
-        const Interval step = v[a][k];
-        neg_lo[a] = std::min(-old.lo(), next_neg_lo + step.hi());
-        hi[a] = std::min(old.hi(), next_hi - step.lo());
-        x[a][k] = Interval::from_bounds(-neg_lo[a], hi[a]);
-        shrink[a] = std::max(shrink[a], std::max(-neg_lo[a] - old.lo(), old.hi() - hi[a]));
-        const double step_lo = std::max(step.lo(), -(hi[a] + next_neg_lo));
-        const double step_hi = std::min(step.hi(), next_hi + neg_lo[a]);
-        v[a][k] = Interval::from_bounds(step_lo, step_hi);
-        narrowed |= (-neg_lo[a] != old.lo()) | (hi[a] != old.hi());
-        step_narrowed |= (step_lo != step.lo()) | (step_hi != step.hi());
-        empty_now |= static_cast<unsigned>(!(-neg_lo[a] <= hi[a]) || !(step_lo <= step_hi)) << a;
+        bool empty, here_moved, step_moved;
+        backward_step(neg_lo[a], hi[a], x[a][k], v[a][k], shrink[a], empty, here_moved, step_moved);
+        narrowed |= here_moved;
+        step_narrowed |= step_moved;
+        empty_now |= static_cast<unsigned>(empty) << a;
       }
       if (empty_now != 0) {
         emptied = empty_now;
