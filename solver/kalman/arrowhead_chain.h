@@ -37,12 +37,13 @@ class ArrowheadChain {
   /// solve works in place, so factors are added again only after reset().
   void reset();
   /// reset() but for the steps' information W_k (add_step), which stays for
-  /// add_steps_again(): an odometry that does not change between linearisations (no
-  /// biases) is computed once. add_step() is refused until the next reset() (it would
-  /// add to the kept W_k).
+  /// add_steps_again(), the next call: an odometry that does not change between
+  /// linearisations (no biases) is computed once. add_step() is refused until the next
+  /// reset() (it would add to the kept W_k).
   void reset_keeping_steps();
-  /// Once after reset_keeping_steps() (std::logic_error otherwise): the steps
-  /// p_{k+1} - p_k = delta[k] again, with the information kept, for unknowns taken as
+  /// Once after reset_keeping_steps(), before any other factor (std::logic_error
+  /// otherwise; it writes every block, which reset_keeping_steps() leaves as they were):
+  /// the steps p_{k+1} - p_k = delta[k] again, with the information kept, for unknowns taken as
   /// corrections from a reference point (p_k = r_k + x_k, r_k the three numbers
   /// reference[3k..3k+2]): x_{k+1} - x_k = relative_step(delta[k], r_k, r_{k+1}). The same
   /// system, bit for bit, as add_step(k, W_k, that step) for every k.
@@ -138,6 +139,7 @@ class ArrowheadChain {
   // the blocks (std::logic_error otherwise, until reset()).
   void require_factors(const char* caller) const;
   void clear_factors();     // every factor but the steps' information
+  void clear_static_factors();  // the mixed factors and the static unknowns' information
   void release_segments();  // what the forward pass left for the backward passes
 
   std::size_t n_, q_;

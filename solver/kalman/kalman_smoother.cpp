@@ -147,8 +147,8 @@ KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const 
     ChainBuilder builder(chain, k_mines, o.biases, lin);
     if (fixed_odometry) {
       chain.reset_keeping_steps();
+      chain.add_steps_again(odometry_delta, lin.position.values());  // (first: it writes every block)
       add_priors(chain, builder, prior_sigma, lin);
-      chain.add_steps_again(odometry_delta, lin.position.values());
     } else {
       chain.reset();
       add_priors(chain, builder, prior_sigma, lin);

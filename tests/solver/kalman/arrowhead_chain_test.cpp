@@ -139,7 +139,8 @@ TEST(ArrowheadChain, HandsOverItsCovariancesSymmetricAndOnce) {
 // The smoother without biases keeps the odometry's information between passes and adds
 // its steps again (reset_keeping_steps, add_steps_again), as corrections from the pass's
 // point: the system solved must be the one a chain given every factor afresh (the steps
-// relative to that point) solves, bit for bit, whatever the other factors;
+// relative to that point, first, as the smoother adds them) solves, bit for bit,
+// whatever the other factors, and whatever the blocks held from the pass before;
 // so must the means solved first and the covariances after (solve_means, then
 // solve_covariances) be solve()'s.
 TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStepsGivenAfresh) {
@@ -178,18 +179,23 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
   EXPECT_THROW(ArrowheadChain(n, q, std::vector<Mat3>(w.begin() + 1, w.end())), std::invalid_argument);
   for (const unsigned pass : {1u, 2u, 3u}) {
     kept.reset_keeping_steps();
-    other_factors(kept, pass);
+    // The blocks are not zeroed by reset_keeping_steps(): nothing but add_steps_again(),
+    // which writes every one, may come next.
+    EXPECT_THROW(kept.add_position(0, Mat3::Identity(), Vec3::Zero()), std::logic_error);
+    EXPECT_THROW(kept.add_position_row(0, Eigen::RowVector3d(0, 0, 1), 1.0, 1.0), std::logic_error);
+    EXPECT_THROW(kept.solve_means(), std::logic_error);
     kept.add_steps_again(delta, reference);
+    other_factors(kept, pass);
     EXPECT_THROW(kept.solve_covariances(), std::logic_error);  // the means first
     kept.solve_means();  // (as the smoother solves a pass that needs no covariance)
     given.reset_keeping_steps();
-    other_factors(given, pass);
     given.add_steps_again(delta, reference);
+    other_factors(given, pass);
     given.solve();
     ArrowheadChain fresh(n, q);
-    other_factors(fresh, pass);
     for (std::size_t k = 0; k + 1 < n; ++k)
       fresh.add_step(k, w[k], ArrowheadChain::relative_step(delta[k], point(k), point(k + 1)));
+    other_factors(fresh, pass);
     fresh.solve();
     for (std::size_t k = 0; k < n; ++k) ASSERT_EQ(kept.mean(k), fresh.mean(k)) << "pass " << pass << ", step " << k;
     kept.solve_covariances();

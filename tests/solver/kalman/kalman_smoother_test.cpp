@@ -75,8 +75,8 @@ TEST(KalmanSmoother, TheOdometryKeptIsTheOdometryLinearisedAgain) {
   linearise_measurements(m, m.model, t.fixes, {1.0, false, FactorSet::odometry}, lin_kept, keep);
   for (int pass = 0; pass < 2; ++pass) {  // (the second pass at the first one's estimate)
     kept.reset_keeping_steps();
-    prior(kept, lin_kept);
     kept.add_steps_again(keep.delta, lin_kept.position.values());
+    prior(kept, lin_kept);  // (after the steps, as the smoother adds it: the same sums, a + b = b + a)
     ChainBuilder kept_builder(kept, mines, false, lin_kept);
     linearise_measurements(m, m.model, t.fixes, {1.0, false, FactorSet::without_odometry}, lin_kept, kept_builder);
     kept.solve();
