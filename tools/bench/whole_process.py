@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Whole-process cost of the gesmi commands (docs/performance.md, "Whole process"):
 each command run as a process, several times, with its CPU time (user + system, from
-wait4), wall time and peak resident memory; the median of the runs is printed as a
+wait4, and each of the two: on a virtual machine the system time is mostly the host
+supplying fresh memory, and varies with what ran before, docs/performance.md), wall
+time and peak resident memory; the median of the runs is printed as a
 Markdown table. Each command first runs once under /usr/bin/time for its peak; that run
 is not counted in the times (time's own start would add a few milliseconds to them). Missions: the reference-like one (59,995 steps) and, with --sizes,
 10^6 and 10^7 steps (the survey repeated).
@@ -43,7 +45,8 @@ PAUSE = 0.0  # seconds slept before each timed run (--pause)
 
 
 def run(command, quiet=True, peak=False):
-    """One process: (CPU s, wall s, peak RSS MiB or None). Exit codes 0 and 3 count as done.
+    """One process: (CPU s, wall s, peak RSS MiB or None, user s, system s); CPU is user
+    plus system. Exit codes 0 and 3 count as done.
 
     With `peak`, the command runs under /usr/bin/time, which forks it and reads its peak:
     a process this script starts directly inherits, through exec, the peak of the Python
@@ -62,7 +65,7 @@ def run(command, quiet=True, peak=False):
             sys.exit(f"whole_process: {' '.join(command)} exited {code}: {process.stderr.read().decode().strip()}")
         process.stderr.close()
         peak_mib = float(peak_file.read().split()[-1]) / 1024.0 if peak else None
-    return usage.ru_utime + usage.ru_stime, wall, peak_mib
+    return usage.ru_utime + usage.ru_stime, wall, peak_mib, usage.ru_utime, usage.ru_stime
 
 
 def one(command, fresh, peak=False):
@@ -73,10 +76,12 @@ def one(command, fresh, peak=False):
 
 
 def median_of(runs, command, fresh=None):
-    """Median CPU and wall over the runs, and the peak of one run before them (not counted)."""
+    """Median CPU and wall over the runs, the peak of one run before them (not counted),
+    and the median user and system times."""
     peak = one(command, fresh, peak=True)[2]
     samples = [one(command, fresh) for _ in range(runs)]
-    return statistics.median(s[0] for s in samples), statistics.median(s[1] for s in samples), peak
+    return (statistics.median(s[0] for s in samples), statistics.median(s[1] for s in samples), peak,
+            statistics.median(s[3] for s in samples), statistics.median(s[4] for s in samples))
 
 
 def paired(runs, a, b):
@@ -149,29 +154,32 @@ def main():
     if args.vs:
         compare(args, gesmi, os.path.abspath(args.vs), folder)
         return
-    print("| command | steps | CPU (s) | wall (s) | peak memory (MiB) | runs |")
-    print("|---|---:|---:|---:|---:|---:|")
+    print("| command | steps | CPU (s) | user (s) | system (s) | wall (s) | peak memory (MiB) | runs |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|")
     try:
         for size in args.sizes:
             mission = f"{folder}/m-{size}.h5"
             simulate = [gesmi, "simulate", "--preset", "redermor", "--seed", "1", "--missed", "0.3", "--duration",
                         repr(SIZES[size]), "-o", mission]
-            cpu, wall, peak = run(simulate, peak=True)
+            cpu, wall, peak, user, system = run(simulate, peak=True)
             with h5py.File(mission, "r") as f:
                 steps = f["nav/time"].shape[0]
-            print(f"| simulate | {steps:,} | {cpu:.3f} | {wall:.3f} | {peak:.0f} | 1 |", flush=True)
+            print(f"| simulate | {steps:,} | {cpu:.3f} | {user:.3f} | {system:.3f} | {wall:.3f} | {peak:.0f} | 1 |",
+                  flush=True)
             runs = args.runs if size == "ref" else args.big_runs
             operator = [0.0, 0.0]
             for name, command, setup, fresh in commands(gesmi, folder, mission):
                 if not wanted(args, name):
                     continue
                 prepare(setup)
-                cpu, wall, peak = median_of(runs, command, fresh)
+                cpu, wall, peak, user, system = median_of(runs, command, fresh)
                 if name in ("marks add", "solve --from (one added mark)", "waterfall", "candidates"):
                     operator = [operator[0] + cpu, operator[1] + wall]
-                print(f"| {name} | {steps:,} | {cpu:.3f} | {wall:.3f} | {peak:.0f} | {runs} |", flush=True)
+                print(f"| {name} | {steps:,} | {cpu:.3f} | {user:.3f} | {system:.3f} | {wall:.3f} | {peak:.0f} | {runs} |",
+                      flush=True)
             if not args.only:
-                print(f"| operator iteration (marks add, solve --from, waterfall, candidates) | {steps:,} | {operator[0]:.3f} | {operator[1]:.3f} | | |")
+                print(f"| operator iteration (marks add, solve --from, waterfall, candidates) | {steps:,} | {operator[0]:.3f} "
+                      f"| | | {operator[1]:.3f} | | |")
     finally:
         if not args.keep:
             shutil.rmtree(folder, ignore_errors=True)
