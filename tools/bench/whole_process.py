@@ -2,7 +2,8 @@
 """Whole-process cost of the gesmi commands (docs/performance.md, "Whole process"):
 each command run as a process, several times, with its CPU time (user + system, from
 wait4, and each of the two: on a virtual machine the system time is mostly the host
-supplying fresh memory, and varies with what ran before, docs/performance.md), wall
+supplying fresh memory, and varies with what ran before, docs/performance.md; the kernel
+splits the two by timer ticks, coarsely for a command of tens of milliseconds), wall
 time and peak resident memory; the median of the runs is printed as a
 Markdown table. Each command first runs once under /usr/bin/time for its peak; that run
 is not counted in the times (time's own start would add a few milliseconds to them). Missions: the reference-like one (59,995 steps) and, with --sizes,
@@ -22,7 +23,11 @@ after a pause (docs/performance.md, "The heap back in small pages").
 --vs compares two builds on a shared machine, whose speed drifts between minutes: each
 command of the two is run in turn (A B A B ..., after one pair not counted), each in its
 own folder on the same mission, and the ratio A/B of each pair's CPU time is printed
-with the medians (its median, then its range: a wide range says the machine was noisy).
+with the medians (its median, then its range: a wide range says the machine was noisy),
+and the ratio of the user times alone, which the host's supply of fresh memory moves less
+(at 10^6 and 10^7 steps: the kernel splits a process's CPU time into user and system by
+timer ticks, so for a command of tens of milliseconds the split is coarse and that ratio
+noisier than the CPU's).
 Copy both binaries into one folder first: one run from the build tree it was linked in
 started up to a tenth slower than its copy here (docs/performance.md, "Paired runs need
 both binaries in one folder"); the commands a change does not touch should give about 1.
@@ -86,14 +91,15 @@ def median_of(runs, command, fresh=None):
 
 def paired(runs, a, b):
     """A and B in turn, after one pair not counted that measures the peaks. a, b: (argv,
-    folder to remove before each run or None). Medians of each, and the pairs' CPU
-    ratios A/B."""
+    folder to remove before each run or None). Medians of each, the pairs' CPU ratios A/B,
+    and their user-time ratios (for long commands: see the module's docstring)."""
     peaks = (one(*a, peak=True)[2], one(*b, peak=True)[2])
     pairs = [(one(*a), one(*b)) for _ in range(runs)]
     medians = [tuple(statistics.median(p[side][i] for p in pairs) for i in range(2)) + (peaks[side],)
                for side in (0, 1)]
     ratios = [p[0][0] / p[1][0] for p in pairs]
-    return medians[0], medians[1], ratios
+    user_ratios = [p[0][3] / p[1][3] for p in pairs if p[1][3] > 0.0]
+    return medians[0], medians[1], ratios, user_ratios
 
 
 def first_missed_mark(mission):
@@ -193,8 +199,8 @@ def wanted(args, name):
 def compare(args, gesmi_a, gesmi_b, folder):
     """--vs: each command of A and B in turn, on the same mission (A simulates it)."""
     print("| command | steps | CPU A (s) | CPU B (s) | A/B CPU: median (range) | wall A (s) | wall B (s) "
-          "| peak A (MiB) | peak B (MiB) | pairs |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+          "| A/B user: median (range) | peak A (MiB) | peak B (MiB) | pairs |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     try:
         for size in args.sizes:
             mission = f"{folder}/m-{size}.h5"
@@ -212,10 +218,12 @@ def compare(args, gesmi_a, gesmi_b, folder):
                     continue
                 prepare(setup_a)
                 prepare(setup_b)
-                a, b, ratios = paired(runs, (command_a, fresh_a), (command_b, fresh_b))
+                a, b, ratios, user_ratios = paired(runs, (command_a, fresh_a), (command_b, fresh_b))
+                user = (f"{statistics.median(user_ratios):.2f} ({min(user_ratios):.2f}–{max(user_ratios):.2f})"
+                        if user_ratios else "")
                 print(f"| {name} | {steps:,} | {a[0]:.3f} | {b[0]:.3f} | {statistics.median(ratios):.2f} "
-                      f"({min(ratios):.2f}–{max(ratios):.2f}) | {a[1]:.3f} | {b[1]:.3f} | {a[2]:.1f} | {b[2]:.1f} "
-                      f"| {runs} |", flush=True)
+                      f"({min(ratios):.2f}–{max(ratios):.2f}) | {a[1]:.3f} | {b[1]:.3f} | {user} | {a[2]:.1f} "
+                      f"| {b[2]:.1f} | {runs} |", flush=True)
     finally:
         if not args.keep:
             shutil.rmtree(folder, ignore_errors=True)
