@@ -84,17 +84,13 @@ void BM_ReadMission60k(benchmark::State& state) {
   state.counters["file_MB"] = static_cast<double>(fs::file_size(file.path())) / 1e6;
 }
 
-// A warm rerun's reading of the earlier result (every part, its digests checked): the
-// result of a cold solve of the reference-like mission, written once. glibc gives each
-// iteration's arrays back to the kernel, so on a host where a small page's fault is
-// costly (BM_SmallPageFault) the faults dominate: 23 ms here against 4-6 ms with the
-// heap kept as the gesmi command keeps it (GLIBC_TUNABLES=
-// glibc.malloc.mmap_threshold=1073741824:glibc.malloc.trim_threshold=4294967295).
-void BM_ReadResult60k(benchmark::State& state) {
-  static const std::string path = [] {
+// The result of a cold solve of the reference-like mission, written once to a
+// temporary file.
+class ResultFile {
+ public:
+  ResultFile() {
     const char* tmp = std::getenv("TMPDIR");
-    const std::string p =
-        (fs::path(tmp ? tmp : "/tmp") / ("gesmi-bench-result-" + std::to_string(::getpid()) + ".h5")).string();
+    path_ = (fs::path(tmp ? tmp : "/tmp") / ("gesmi-bench-result-" + std::to_string(::getpid()) + ".h5")).string();
     SimulationOptions o;
     o.seed = 1;
     o.duration = 5999.4;
@@ -104,13 +100,25 @@ void BM_ReadResult60k(benchmark::State& state) {
     io::SolveResult r;
     r.solution = solve_mission(m);
     io::record_inputs(r, m);
-    io::write_result(r, p);
-    std::atexit([] { fs::remove(path); });
-    return p;
-  }();
+    io::write_result(r, path_);
+  }
+  ~ResultFile() { fs::remove(path_); }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// A warm rerun's reading of the earlier result (every part, its digests checked). glibc
+// gives each iteration's arrays back to the kernel, so on a host where a small page's
+// fault is costly (BM_SmallPageFault) the faults dominate: 23 ms here against 4-6 ms
+// with the heap kept as the gesmi command keeps it (GLIBC_TUNABLES=
+// glibc.malloc.mmap_threshold=1073741824:glibc.malloc.trim_threshold=4294967295).
+void BM_ReadResult60k(benchmark::State& state) {
+  static const ResultFile file;
   std::size_t steps = 0;
   for (auto _ : state) {
-    const io::SolveResult r = io::read_result(path);
+    const io::SolveResult r = io::read_result(file.path());
     steps = r.solution.domains.size();
     benchmark::DoNotOptimize(r.solution.domains.px.data());
   }
