@@ -50,30 +50,44 @@ std::size_t mission_bytes(const Mission& m) {
   return doubles * sizeof(double);
 }
 
-// A simulated mission of `duration` s at 10 Hz written once to a temporary file.
-class MissionFile {
+// A simulated mission of `duration` s at 10 Hz (seed 1, with the reference origin).
+Mission simulated(double duration) {
+  SimulationOptions o;
+  o.seed = 1;
+  o.duration = duration;
+  Mission m = simulate_mission(o);
+  m.origin = {48.212920614, -4.458227931};
+  io::set_geodetic_gps(m);
+  return m;
+}
+
+// A file under $TMPDIR (or /tmp), `stem`-PID.h5, written once by `write(path)` and
+// removed when the object goes.
+class TemporaryFile {
  public:
-  explicit MissionFile(double duration) {
+  template <class Write>
+  TemporaryFile(const std::string& stem, Write&& write) {
     const char* tmp = std::getenv("TMPDIR");
-    path_ = (fs::path(tmp ? tmp : "/tmp") / ("gesmi-bench-" + std::to_string(static_cast<long>(duration)) + "-" +
-                                             std::to_string(::getpid()) + ".h5")).string();
-    SimulationOptions o;
-    o.seed = 1;
-    o.duration = duration;
-    Mission m = simulate_mission(o);
-    m.origin = {48.212920614, -4.458227931};
-    io::set_geodetic_gps(m);
-    io::write_mission(m, path_);
+    path_ = (fs::path(tmp ? tmp : "/tmp") / (stem + "-" + std::to_string(::getpid()) + ".h5")).string();
+    write(path_);
   }
-  ~MissionFile() { fs::remove(path_); }
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+  ~TemporaryFile() { fs::remove(path_); }
   const std::string& path() const { return path_; }
 
  private:
   std::string path_;
 };
 
+// The simulated mission of `duration` s in a temporary file.
+TemporaryFile mission_file(double duration) {
+  return TemporaryFile("gesmi-bench-" + std::to_string(static_cast<long>(duration)),
+                       [&](const std::string& path) { io::write_mission(simulated(duration), path); });
+}
+
 void BM_ReadMission60k(benchmark::State& state) {
-  static const MissionFile file(5999.4);
+  static const TemporaryFile file = mission_file(5999.4);
   std::size_t samples = 0;
   for (auto _ : state) {
     const Mission m = io::read_mission(file.path());
@@ -84,30 +98,16 @@ void BM_ReadMission60k(benchmark::State& state) {
   state.counters["file_MB"] = static_cast<double>(fs::file_size(file.path())) / 1e6;
 }
 
-// The result of a cold solve of the reference-like mission, written once to a
-// temporary file.
-class ResultFile {
- public:
-  ResultFile() {
-    const char* tmp = std::getenv("TMPDIR");
-    path_ = (fs::path(tmp ? tmp : "/tmp") / ("gesmi-bench-result-" + std::to_string(::getpid()) + ".h5")).string();
-    SimulationOptions o;
-    o.seed = 1;
-    o.duration = 5999.4;
-    Mission m = simulate_mission(o);
-    m.origin = {48.212920614, -4.458227931};
-    io::set_geodetic_gps(m);
+// The result of a cold solve of the reference-like mission in a temporary file.
+TemporaryFile result_file() {
+  return TemporaryFile("gesmi-bench-result", [](const std::string& path) {
+    const Mission m = simulated(5999.4);
     io::SolveResult r;
     r.solution = solve_mission(m);
     io::record_inputs(r, m);
-    io::write_result(r, path_);
-  }
-  ~ResultFile() { fs::remove(path_); }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
+    io::write_result(r, path);
+  });
+}
 
 // A warm rerun's reading of the earlier result (every part, its digests checked). glibc
 // gives each iteration's arrays back to the kernel, so on a host where a small page's
@@ -115,7 +115,7 @@ class ResultFile {
 // with the heap kept as the gesmi command keeps it (GLIBC_TUNABLES=
 // glibc.malloc.mmap_threshold=1073741824:glibc.malloc.trim_threshold=4294967295).
 void BM_ReadResult60k(benchmark::State& state) {
-  static const ResultFile file;
+  static const TemporaryFile file = result_file();
   std::size_t steps = 0;
   for (auto _ : state) {
     const io::SolveResult r = io::read_result(file.path());
@@ -126,7 +126,7 @@ void BM_ReadResult60k(benchmark::State& state) {
 }
 
 void BM_ReadMission10M(benchmark::State& state) {
-  static const MissionFile file(999999.9);  // 10^7 samples
+  static const TemporaryFile file = mission_file(999999.9);  // 10^7 samples
   for (auto _ : state) {
     state.PauseTiming();
     reset_peak();
