@@ -222,8 +222,9 @@ void solve_outliers(const Mission& mission, const SolveInputs& in, const SolveOp
   for (std::size_t a = 0; a < net.anchors.size(); ++a) s.gps_outlier[net.anchors[a].fix.source_index] = r.fix_outlier[a];
 }
 
+// `spent`: null, or *options.warm_from given up by the caller (its increments are taken).
 void solve_warm(const Mission& mission, const SolveInputs& in, const SolveOptions& options, MissionSolution& s,
-                MissionNetwork& net) {
+                MissionNetwork& net, MissionSolution* spent) {
   const MissionSolution& previous = *options.warm_from;
   std::string why = warm_start_problem(mission, previous);
   std::optional<detail::WarmDomains> warm;
@@ -234,7 +235,7 @@ void solve_warm(const Mission& mission, const SolveInputs& in, const SolveOption
     net = network_in(mission, in, margins.view(mission));
     s.report.beyond_frame_zone = margins.beyond_zone;
     s.timings_ms["build"] += elapsed_ms(start);
-    warm = detail::warm_domains(mission, net, previous, why);
+    warm = detail::warm_domains(mission, net, previous, why, spent);
   }
   if (!warm) {
     s.report.cold_fallback = why;
@@ -263,8 +264,9 @@ std::string wording(const SolveReport& report, const SolveOptions& options, cons
   return text;
 }
 
-// Every mode's solve; `releasable`: see MissionReadings.
-MissionSolution solve_in_mode(const Mission& mission, const SolveOptions& options, Mission* releasable) {
+// Every mode's solve; `releasable`: see MissionReadings; `spent`: see solve_warm.
+MissionSolution solve_in_mode(const Mission& mission, const SolveOptions& options, Mission* releasable,
+                              MissionSolution* spent) {
   // The smoother releases more than a solve does (the attitude and altitude too).
   if (readings_released(mission))
     throw std::invalid_argument("solve_mission: the mission's navigation readings were released (MissionReadings); put them back");
@@ -287,7 +289,7 @@ MissionSolution solve_in_mode(const Mission& mission, const SolveOptions& option
   MissionNetwork net;
   s.timings_ms["build"] = elapsed_ms(start);
   if (options.warm_from)
-    solve_warm(mission, in, options, s, net);
+    solve_warm(mission, in, options, s, net, spent);
   else if (options.max_outliers >= 0)
     solve_outliers(mission, in, options, s, net);
   else
@@ -334,11 +336,18 @@ std::string SolveOptions::validate() const {
 }
 
 MissionSolution solve_mission(const Mission& mission, const SolveOptions& options) {
-  return solve_in_mode(mission, options, nullptr);
+  return solve_in_mode(mission, options, nullptr, nullptr);
 }
 
 MissionSolution solve_mission(Mission& mission, const SolveOptions& options, MissionReadings readings) {
-  return solve_in_mode(mission, options, readings == MissionReadings::released_after_use ? &mission : nullptr);
+  return solve_in_mode(mission, options, readings == MissionReadings::released_after_use ? &mission : nullptr, nullptr);
+}
+
+MissionSolution solve_mission(Mission& mission, SolveOptions options, MissionReadings readings,
+                              MissionSolution&& previous) {
+  options.warm_from = &previous;
+  return solve_in_mode(mission, options, readings == MissionReadings::released_after_use ? &mission : nullptr,
+                       &previous);
 }
 
 void diagnose_inconsistency(const Mission& mission, const SolveOptions& options, MissionSolution& s) {

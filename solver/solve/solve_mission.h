@@ -52,6 +52,13 @@ MissionSolution solve_mission(const Mission& mission, const SolveOptions& option
 /// the readings back (read again) and calls diagnose_inconsistency().
 MissionSolution solve_mission(Mission& mission, const SolveOptions& options, MissionReadings readings);
 
+/// A warm rerun from `previous`, which the caller gives up (options.warm_from is
+/// replaced by it): its increments are moved into the new solution instead of copied (at
+/// 10^7 steps 480 MB less memory and one copy less; docs/performance.md, "A warm rerun
+/// takes the earlier increments"). The result is the same as with options.warm_from =
+/// &previous. `previous` is left valid but unspecified.
+MissionSolution solve_mission(Mission& mission, SolveOptions options, MissionReadings readings,
+                              MissionSolution&& previous);
 /// The diagnosis of a solve left pending (report.diagnosis_pending): the single marks
 /// or fixes whose removal restores consistency, added to the report and its message as
 /// solve_mission(const Mission&) gives them. `mission` is the one solved, its readings

@@ -18,7 +18,11 @@ struct WarmDomains {
   TubeDomains domains;
   std::vector<std::size_t> added;
 };
+/// `spent`: null, or `previous` itself when the caller gave it up (solve_mission's
+/// MissionSolution&& overload): its increments are then moved into the domains instead
+/// of copied (the rest of it stays: the waterfall compares the tube and mines with it).
 std::optional<WarmDomains> warm_domains(const Mission& mission, const MissionNetwork& network,
-                                        const MissionSolution& previous, std::string& why);
+                                        const MissionSolution& previous, std::string& why,
+                                        MissionSolution* spent = nullptr);
 
 }  // namespace gesmi::detail

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "io/files/mission_digest.h"
 #include "io/files/mission_file.h"
@@ -75,11 +76,10 @@ int run_solve(std::span<const std::string> args) {
       throw UsageError("--geojson: " + mission_path + ": " + why);
   // Hashed once: the warm start compares it, the result stores it.
   const std::string navigation = io::navigation_digest(mission, io::kResultDigest);
-  MissionSolution previous;
+  std::optional<MissionSolution> previous;
   if (v.count("from")) {
     progress.update(-1.0, "reading " + v["from"].as<std::string>());
     previous = io::read_warm_start(v["from"].as<std::string>(), mission, navigation);
-    options.warm_from = &previous;
   }
   timings["load"] = elapsed_ms(start);
 
@@ -92,7 +92,9 @@ int run_solve(std::span<const std::string> args) {
   // Once the sensor enclosures are built, the solve reads the DVL and depth readings
   // only at the marks and fixes (kept aside): released then (its peak memory), and read
   // again only to diagnose an inconsistency.
-  result.solution = solve_mission(mission, options, MissionReadings::released_after_use);
+  // A warm rerun gives the earlier result up: its increments move into the new one.
+  result.solution = previous ? solve_mission(mission, options, MissionReadings::released_after_use, std::move(*previous))
+                             : solve_mission(mission, options, MissionReadings::released_after_use);
   if (result.solution.report.diagnosis_pending) {
     progress.update(-1.0, "reading " + mission_path + " again to diagnose the inconsistency");
     start = Clock::now();
@@ -102,8 +104,7 @@ int run_solve(std::span<const std::string> args) {
   }
   // The earlier result is done with (its tube and waterfall went into the solve): not
   // held in memory while the new one is written (the peak of a warm rerun).
-  options.warm_from = nullptr;
-  previous = MissionSolution();
+  previous.reset();
   progress.update(-1.0, "writing " + output);
   const MissionSolution& s = result.solution;
   timings.insert(s.timings_ms.begin(), s.timings_ms.end());
