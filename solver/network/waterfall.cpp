@@ -17,14 +17,23 @@ namespace {
 
 bool same(const Interval& a, const Interval& b) { return a.lo() == b.lo() && a.hi() == b.hi(); }
 
-// The step's position boxes and its neighbours' are those of `before`.
-bool same_positions(const TubeDomains& d, const TubeDomains& before, std::size_t k) {
-  for (std::size_t j = k == 0 ? 0 : k - 1; j <= std::min(k + 1, d.size() - 1); ++j)
-    if (!same(d.px[j], before.px[j]) || !same(d.py[j], before.py[j]) || !same(d.pz[j], before.pz[j])) return false;
-  return true;
-}
-
 }  // namespace
+
+WaterfallBefore waterfall_before(const Waterfall& earlier, const TubeDomains& then, const TubeDomains& now) {
+  WaterfallBefore before{earlier, {}, {}};
+  if (then.size() != now.size() || then.mines.size() != now.mines.size()) return before;
+  before.mine_kept.resize(now.mines.size());
+  for (std::size_t i = 0; i < now.mines.size(); ++i)
+    before.mine_kept[i] = same(now.mines[i][0], then.mines[i][0]) && same(now.mines[i][1], then.mines[i][1]) &&
+                          same(now.mines[i][2], then.mines[i][2]);
+  const std::size_t steps = now.size();
+  before.position_kept.resize(steps);
+  for_step_chunks(steps, step_chunk_count(steps), [&](std::size_t, std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k)
+      before.position_kept[k] = same(now.px[k], then.px[k]) && same(now.py[k], then.py[k]) && same(now.pz[k], then.pz[k]);
+  });
+  return before;
+}
 
 void Waterfall::append(const Waterfall& later) {
   step.insert(step.end(), later.step.begin(), later.step.end());
@@ -68,13 +77,16 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
   const SonarGeometry geometry{model.along_track_tolerance, model.mine_depth_band, model.sonar_max_range,
                                model.sonar_side};
   // The mines whose box has not changed since `before`, if any.
-  std::vector<char> mine_kept(mines, 0);
+  std::vector<unsigned char> mine_kept(mines, 0);
   if (before && before->waterfall.steps == steps && before->waterfall.mines == mines &&
-      before->domains.size() == steps && before->domains.mines.size() == mines)
-    for (std::size_t i = 0; i < mines; ++i)
-      mine_kept[i] = same(domains.mines[i][0], before->domains.mines[i][0]) &&
-                     same(domains.mines[i][1], before->domains.mines[i][1]) &&
-                     same(domains.mines[i][2], before->domains.mines[i][2]);
+      before->position_kept.size() == steps && before->mine_kept.size() == mines)
+    mine_kept = before->mine_kept;
+  // The step's position boxes and its neighbours' are those of `before`.
+  const auto same_positions = [&](std::size_t k) {
+    for (std::size_t j = k == 0 ? 0 : k - 1; j <= std::min(k + 1, steps - 1); ++j)
+      if (!before->position_kept[j]) return false;
+    return true;
+  };
   const bool any_kept = std::find(mine_kept.begin(), mine_kept.end(), 1) != mine_kept.end();
   std::vector<KernelMine> kernel_mines(mines);
   std::vector<char> mine_in_kernel(mines);
@@ -99,7 +111,7 @@ Waterfall compute_waterfall(const Mission& mission, const SensorModel& model, co
   const std::size_t chunks = step_chunk_count(steps);
   for_step_chunks(steps, chunks, [&](std::size_t, std::size_t first, std::size_t last) {
     for (std::size_t k = first; k < last; ++k) {
-      kept_steps[k] = any_kept && same_positions(domains, before->domains, k);
+      kept_steps[k] = any_kept && same_positions(k);
       const Vec3I p = domains.position(k);
       const double reach = reach_with(slack_at(k));
       for (std::size_t i = 0; i < mines && !in_reach[k]; ++i) in_reach[k] = near(i, kept_steps[k], p, reach);

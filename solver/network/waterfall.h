@@ -45,14 +45,20 @@ struct Waterfall {
   double hi(std::size_t k, std::size_t i) const;
 };
 
-/// A waterfall computed earlier on the same navigation (a warm rerun's previous result):
-/// a cell whose position boxes (the step's and its neighbours', which fix the heading
-/// margin there) and mine box are bitwise those of then is copied, not recomputed, so
-/// the result is the one a full computation gives.
+/// A waterfall computed earlier on the same navigation (a warm rerun's previous result),
+/// and which boxes are bitwise those of then: a cell whose position boxes (the step's
+/// and its neighbours', which fix the heading margin there) and mine box are is copied,
+/// not recomputed, so the result is the one a full computation gives. Made by
+/// waterfall_before() while the earlier domains are at hand; they are not read after
+/// (a warm rerun frees its earlier tube before the waterfall, 480 MB at 10^7 steps).
 struct WaterfallBefore {
-  const TubeDomains& domains;
   const Waterfall& waterfall;
+  std::vector<unsigned char> position_kept;  // per step: its position box is that of then
+  std::vector<unsigned char> mine_kept;      // per mine: its box is that of then
 };
+/// `then` and `now`: the domains `earlier` was computed on and the current ones, of the
+/// same mission (nothing is kept when their sizes differ).
+WaterfallBefore waterfall_before(const Waterfall& earlier, const TubeDomains& then, const TubeDomains& now);
 
 /// `max_speed`: speed_bound(mission) (frame_margins.h) when the caller has it.
 /// `on_progress` receives the fraction done, from the calling thread.

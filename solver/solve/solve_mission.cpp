@@ -227,7 +227,6 @@ void solve_warm(const Mission& mission, const SolveInputs& in, const SolveOption
                 MissionNetwork& net, MissionSolution* spent) {
   const MissionSolution& previous = *options.warm_from;
   std::string why = warm_start_problem(mission, previous);
-  std::optional<detail::WarmDomains> warm;
   if (why.empty()) {
     // The previous tube holds the truth: the added marks take the margins over it.
     const auto start = Clock::now();
@@ -235,20 +234,24 @@ void solve_warm(const Mission& mission, const SolveInputs& in, const SolveOption
     net = network_in(mission, in, margins.view(mission));
     s.report.beyond_frame_zone = margins.beyond_zone;
     s.timings_ms["build"] += elapsed_ms(start);
-    warm = detail::warm_domains(mission, net, previous, why, spent);
+    why = detail::added_marks_problem(mission, net, previous);
   }
-  if (!warm) {
+  if (!why.empty()) {
     s.report.cold_fallback = why;
     s.report.beyond_frame_zone = 0.0;  // (the cold solve finds its own)
     solve_cold(mission, in, options, s, net);
     return;
   }
   // Only now: a fallback to a cold solve builds the sensor enclosures; a warm rerun none.
+  // Released before the earlier domains are copied (at 10^7 steps the rerun's peak), with
+  // the times of an earlier result given up (compared above, not read again).
   release_sensor_readings(in.releasable);
+  if (spent) std::vector<double>().swap(spent->time);
+  detail::WarmDomains warm = detail::warm_domains(net, previous, spent);
   s.report.mode = SolveMode::warm;
-  s.domains = std::move(warm->domains);
+  s.domains = std::move(warm.domains);
   const auto start = Clock::now();
-  const IncrementalReport r = propagate_from(net, s.domains, warm->added, options.propagation);
+  const IncrementalReport r = propagate_from(net, s.domains, warm.added, options.propagation);
   s.timings_ms["propagate"] = elapsed_ms(start);
   take_propagation(s.report, r.solver);
   s.report.work_items = r.work_items;
@@ -306,9 +309,16 @@ MissionSolution solve_in_mode(const Mission& mission, const SolveOptions& option
     start = Clock::now();
     // A warm rerun's earlier waterfall is copied where nothing it depends on changed.
     const MissionSolution* previous = s.report.mode == SolveMode::warm ? options.warm_from : nullptr;
-    const WaterfallBefore before{previous ? previous->domains : s.domains, previous ? previous->waterfall : s.waterfall};
+    std::optional<WaterfallBefore> before;
+    if (previous) {
+      before.emplace(waterfall_before(previous->waterfall, previous->domains, s.domains));
+      // Compared: an earlier result given up has its tube freed before the waterfall's peak.
+      if (spent)
+        for (std::vector<Interval>* v : {&spent->domains.px, &spent->domains.py, &spent->domains.pz})
+          std::vector<Interval>().swap(*v);
+    }
     stage("waterfall", 0.0);
-    s.waterfall = compute_waterfall(mission, mission.model, s.domains, previous ? &before : nullptr, in.max_speed,
+    s.waterfall = compute_waterfall(mission, mission.model, s.domains, before ? &*before : nullptr, in.max_speed,
                                     [&](double fraction) { stage("waterfall", fraction); });
     s.timings_ms["waterfall"] = elapsed_ms(start);
   }

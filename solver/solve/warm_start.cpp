@@ -28,17 +28,18 @@ std::string warm_start_problem(const Mission& mission, const MissionSolution& pr
 
 namespace detail {
 
-std::optional<WarmDomains> warm_domains(const Mission& mission, const MissionNetwork& network,
-                                        const MissionSolution& previous, std::string& why, MissionSolution* spent) {
-  if (spent && spent != &previous) throw std::logic_error("warm_domains: `spent` must be `previous` itself");
+std::string added_marks_problem(const Mission& mission, const MissionNetwork& network, const MissionSolution& previous) {
   // Symmetry breaking among unlabelled mines depends on the labelled ones: if the
   // added marks change it, the earlier domains assumed other labels.
   const std::vector<std::uint64_t> before = allowed_mines_of_marks(mission, previous.mark_count());
   for (const Detection& detection : network.detections)
-    if (detection.mark < before.size() && detection.allowed != before[detection.mark]) {
-      why = "the added marks name a mine no mark named before";
-      return std::nullopt;
-    }
+    if (detection.mark < before.size() && detection.allowed != before[detection.mark])
+      return "the added marks name a mine no mark named before";
+  return {};
+}
+
+WarmDomains warm_domains(const MissionNetwork& network, const MissionSolution& previous, MissionSolution* spent) {
+  if (spent && spent != &previous) throw std::logic_error("warm_domains: `spent` must be `previous` itself");
   WarmDomains warm;
   // The increments are half of the domains (480 MB at 10^7 steps): when given up, taken
   // out first, so that the copy leaves them, and put into the new domains.
