@@ -174,7 +174,9 @@ def main():
                   flush=True)
             runs = args.runs if size == "ref" else args.big_runs
             operator = [0.0, 0.0]
-            for name, command, setup, fresh in commands(gesmi, folder, mission):
+            # (a folder per size: a setup file of another size is never taken for this one's)
+            os.makedirs(f"{folder}/{size}", exist_ok=True)
+            for name, command, setup, fresh in commands(gesmi, f"{folder}/{size}", mission):
                 if not wanted(args, name):
                     continue
                 prepare(setup)
@@ -211,8 +213,8 @@ def compare(args, gesmi_a, gesmi_b, folder):
             runs = args.runs if size == "ref" else args.big_runs
             sides = []
             for side, gesmi in (("a", gesmi_a), ("b", gesmi_b)):
-                os.makedirs(f"{folder}/{side}", exist_ok=True)
-                sides.append(commands(gesmi, f"{folder}/{side}", mission))
+                os.makedirs(f"{folder}/{size}/{side}", exist_ok=True)
+                sides.append(commands(gesmi, f"{folder}/{size}/{side}", mission))
             for (name, command_a, setup_a, fresh_a), (_, command_b, setup_b, fresh_b) in zip(*sides):
                 if not wanted(args, name):
                     continue
