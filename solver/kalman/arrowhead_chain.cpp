@@ -43,11 +43,11 @@ Mat3 symmetric_product(const Mat3& x, const Mat3& y) {
 
 ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, double prior_info)
     : n_(n), q_(q), prior_info_(prior_info), diag_(9 * n, 0.0), eta_(n, Vec3::Zero()),
-      step_info_(n > 0 ? n - 1 : 0, Mat3::Zero()),
+      step_info_(n > 0 ? n - 1 : 0),
       d_(MatX::Identity(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)) * prior_info),
       eta_m_(VecX::Zero(static_cast<Eigen::Index>(q))) {}
 
-ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, std::vector<Mat3> step_information, double prior_info)
+ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, std::vector<Symmetric3> step_information, double prior_info)
     : n_(n), q_(q), prior_info_(prior_info), diag_(9 * n, 0.0), eta_(n, Vec3::Zero()),
       step_info_(std::move(step_information)),
       d_(MatX::Identity(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q)) * prior_info),
@@ -58,7 +58,7 @@ ArrowheadChain::ArrowheadChain(std::size_t n, std::size_t q, std::vector<Mat3> s
 }
 
 void ArrowheadChain::reset() {
-  step_info_.assign(n_ > 0 ? n_ - 1 : 0, Mat3::Zero());  // (released after a last solve)
+  step_info_.assign(n_ > 0 ? n_ - 1 : 0, Symmetric3{});  // (released after a last solve)
   steps_ = Steps::building;
   clear_factors();
 }
@@ -77,7 +77,7 @@ void ArrowheadChain::require_factors(const char* caller) const {
 }
 
 void ArrowheadChain::release_workspace() {
-  std::vector<Mat3>().swap(step_info_);
+  std::vector<Symmetric3>().swap(step_info_);
   steps_ = Steps::released;
   release_segments();
 }
@@ -123,8 +123,12 @@ void ArrowheadChain::add_step(std::size_t k, const Mat3& w, const Vec3& delta) {
   if (steps_ != Steps::building)
     throw std::logic_error("ArrowheadChain::add_step: the steps are kept or released; reset() first");
   require_factors("add_step");
-  step_info_[k] += w;
-  add_step_terms(k, w, delta);
+  // Read as kept (its upper triangle, mirrored), so that add_steps_again() adds the same.
+  Symmetric3& kept = step_info_[k];
+  const Symmetric3 added = Symmetric3::upper_of(w);
+  kept = {kept.xx + added.xx, kept.xy + added.xy, kept.xz + added.xz, kept.yy + added.yy, kept.yz + added.yz,
+          kept.zz + added.zz};
+  add_step_terms(k, added.full(), delta);
 }
 
 void ArrowheadChain::add_step_terms(std::size_t k, const Mat3& w, const Vec3& delta) {
@@ -157,7 +161,7 @@ void ArrowheadChain::add_steps_again(std::span<const Vec3> delta, std::span<cons
       term += pushed;
     }
     if (k + 1 < n_) {
-      const Mat3& w = step_info_[k];
+      const Mat3 w = step_info_[k].full();
       const Vec3 wd = w * relative_step(delta[k], point(k), point(k + 1));
       block += w;
       term -= wd;
@@ -270,10 +274,10 @@ void ArrowheadChain::solve() {
       const Mat3 p_k = s_k * t;  // P_k
       acc += symmetric_product(t.transpose(), p_k);  // T^T S T
       acc_eta.noalias() += t.transpose() * c_k;
-      if (k + 1 < n_) t = step_info_[k] * p_k;  // T_{k+1} (an event at k + 1 resets it below)
+      if (k + 1 < n_) t = step_info_[k].full() * p_k;  // T_{k+1} (an event at k + 1 resets it below)
     }
     if (k + 1 == n_) break;
-    const Mat3& w = step_info_[k];  // the (k, k+1) block is -W
+    const Mat3 w = step_info_[k].full();  // the (k, k+1) block is -W
     a = diag(k + 1) - symmetric_product(w * s_k, w);
     eta = eta_[k + 1] + w * c_k;
     if (const MatX* b = mixed_at(k + 1)) {
@@ -339,7 +343,7 @@ int ArrowheadChain::segment_of(std::size_t k) const {
         v = bm_[static_cast<std::size_t>(++segment)];  // T_k = I
         ++next_event;
       } else if (k > first) {
-        v = step_info_[k - 1] * (diag(k - 1) * v).eval();  // (zero before the first event)
+        v = step_info_[k - 1].full() * (diag(k - 1) * v).eval();  // (zero before the first event)
       }
       coupled[k - first] = v;
     }
@@ -348,7 +352,7 @@ int ArrowheadChain::segment_of(std::size_t k) const {
     if (k + 1 == n_ || (k + 1) % kCouplingBlock == 0) recompute_coupled(k - k % kCouplingBlock, k + 1);
     // eta_[k + 1] holds the mean of p_{k+1} by now, eta_[k] still c_k.
     Vec3 r = -coupled[k % kCouplingBlock];
-    if (k + 1 < n_) r += step_info_[k] * eta_[k + 1];
+    if (k + 1 < n_) r += step_info_[k].full() * eta_[k + 1];
     eta_[k] += diag(k) * r;
   }
 }
@@ -372,7 +376,7 @@ int ArrowheadChain::segment_of(std::size_t k) const {
         ++next_event;
       }
       if (segment < 0) continue;  // before the first event: no coupling
-      if (k > first) t_k = event ? Mat3::Identity().eval() : (step_info_[k - 1] * coupling[k - 1 - first]).eval();
+      if (k > first) t_k = event ? Mat3::Identity().eval() : (step_info_[k - 1].full() * coupling[k - 1 - first]).eval();
       coupling[k - first] = diag(k) * t_k;
     }
   };
@@ -384,7 +388,7 @@ int ArrowheadChain::segment_of(std::size_t k) const {
   for (std::size_t k = n_; k-- > 0;) {
     if (k + 1 == n_ || (k + 1) % kCouplingBlock == 0) recompute_coupling(k - k % kCouplingBlock, k + 1);
     while (segment >= 0 && events_[static_cast<std::size_t>(segment)] > k) --segment;
-    const Mat3 l = k + 1 < n_ ? (-diag(k) * step_info_[k]).eval() : Mat3::Zero();
+    const Mat3 l = k + 1 < n_ ? (-diag(k) * step_info_[k].full()).eval() : Mat3::Zero();
     if (segment != current) {
       // Entering a new segment (going backward): X_{k+1} in full from the previous one.
       if (current >= 0 && k + 1 < n_) z = alpha * z + beta * b_sigma_[static_cast<std::size_t>(current)];

@@ -23,6 +23,20 @@ class ArrowheadChain {
   using VecX = Eigen::VectorXd;
   using Row3 = Eigen::RowVector3d;
 
+  /// A symmetric 3x3 block by its upper triangle: six numbers where a Mat3 takes nine
+  /// (the steps' information was a third of the smoother's memory at 10^7 steps).
+  struct Symmetric3 {
+    double xx = 0.0, xy = 0.0, xz = 0.0, yy = 0.0, yz = 0.0, zz = 0.0;
+    /// m's upper triangle (its lower one is not read).
+    static Symmetric3 upper_of(const Mat3& m) { return {m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2)}; }
+    /// The block, its lower triangle mirrored from the upper one.
+    Mat3 full() const {
+      Mat3 m;
+      m << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+      return m;
+    }
+  };
+
   /// n positions, q static unknowns (with a weak prior of information prior_info on
   /// each, so that unknowns no factor reaches stay finite).
   ArrowheadChain(std::size_t n, std::size_t q, double prior_info = 1e-12);
@@ -30,7 +44,7 @@ class ArrowheadChain {
   /// otherwise) given, as kept by reset_keeping_steps() after add_step(k, W_k, ...) for
   /// every k: the next call is reset_keeping_steps(). For an odometry computed before
   /// the chain's other blocks are allocated (what kalman_smooth() releases in between).
-  ArrowheadChain(std::size_t n, std::size_t q, std::vector<Mat3> step_information, double prior_info = 1e-12);
+  ArrowheadChain(std::size_t n, std::size_t q, std::vector<Symmetric3> step_information, double prior_info = 1e-12);
 
   /// Removes every factor, keeping the memory: a relinearised system is built again in
   /// the same buffers (at 10^7 steps, reallocating them cost more than the solve). The
@@ -53,8 +67,9 @@ class ArrowheadChain {
   /// corrections keeps the chain's rounding to the corrections' size (issue: whole-process
   /// speed, docs/comparison.md "When the smoother stops").
   static Vec3 relative_step(const Vec3& delta, const Vec3& from, const Vec3& to) { return delta - (to - from); }
-  /// W_k of the step from p_k to p_{k+1}; meaningful until release_workspace().
-  const Mat3& step_information(std::size_t k) const { return step_info_[k]; }
+  /// W_k of the step from p_k to p_{k+1}, as the chain holds it (add_step's upper
+  /// triangle, mirrored); meaningful until release_workspace().
+  Mat3 step_information(std::size_t k) const { return step_info_[k].full(); }
   /// Frees what only the solves need, once no further solve follows: the steps'
   /// information and what the forward pass left for the backward passes (the means and
   /// covariances stay). Solving or adding steps again is refused afterwards, until
@@ -63,7 +78,8 @@ class ArrowheadChain {
 
   /// Information W and mean term on p_k alone: adds W to the block and W * mean.
   void add_position(std::size_t k, const Mat3& information, const Vec3& mean);
-  /// p_{k+1} - p_k = delta with information W (the odometry between two samples).
+  /// p_{k+1} - p_k = delta with information W (the odometry between two samples), read
+  /// from its upper triangle (W is symmetric; its lower triangle is not read).
   void add_step(std::size_t k, const Mat3& information, const Vec3& delta);
   /// One scalar measurement z = hp . p_k with information w.
   void add_position_row(std::size_t k, const Row3& hp, double z, double w);
@@ -149,7 +165,7 @@ class ArrowheadChain {
   std::vector<double> diag_;
   Eigen::Map<Mat3> diag(std::size_t k) { return Eigen::Map<Mat3>(diag_.data() + 9 * k); }
   std::vector<Vec3> eta_;         // information vector of p_k; then c_k; then the mean
-  std::vector<Mat3> step_info_;   // W_k between p_k and p_k+1
+  std::vector<Symmetric3> step_info_;  // W_k between p_k and p_k+1
   std::map<std::size_t, MatX> mixed_;  // B_k (3 x q) at the few steps with a mixed factor
   MatX d_;                        // information of m
   VecX eta_m_;

@@ -86,7 +86,7 @@ KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const 
   // three-pass smoothing saved).
   const bool fixed_odometry = !o.biases;
   std::vector<Vec3d> odometry_delta;
-  std::vector<Mat3d> step_information;
+  std::vector<ArrowheadChain::Symmetric3> step_information;
   // First linearisation: dead reckoning from the first fix (or the origin), biases zero.
   KalmanLinearisation lin;
   lin.position.assign(n, Vec3d::Zero());
@@ -98,16 +98,17 @@ KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const 
     struct DeadReckoning final : MeasurementSink {
       FlatPoints& position;
       bool keeps;  // the odometry is fixed: its factors are kept
-      std::vector<Mat3d>& information_kept;
+      std::vector<ArrowheadChain::Symmetric3>& information_kept;
       std::vector<Vec3d>& delta;
-      DeadReckoning(FlatPoints& p, bool keep, std::vector<Mat3d>& w, std::vector<Vec3d>& d)
+      DeadReckoning(FlatPoints& p, bool keep, std::vector<ArrowheadChain::Symmetric3>& w, std::vector<Vec3d>& d)
           : position(p), keeps(keep), information_kept(w), delta(d) {}
       void odometry(std::size_t k, const Mat3d& information, const Vec3d& step, const BiasJacobian&) override {
         position[k + 1] = position[k] + step;
         if (!keeps) return;
         if (delta.size() != k) throw std::logic_error("kalman_smooth: the odometry steps came out of order");
         // (as ArrowheadChain::add_step accumulates it on a zero block: the same bits)
-        information_kept.push_back(Mat3d::Zero() + information);
+        const ArrowheadChain::Symmetric3 w = ArrowheadChain::Symmetric3::upper_of(information);
+        information_kept.push_back({0.0 + w.xx, 0.0 + w.xy, 0.0 + w.xz, 0.0 + w.yy, 0.0 + w.yz, 0.0 + w.zz});
         delta.push_back(step);
       }
       void scalar(std::size_t, const Eigen::RowVector3d&, int, const Eigen::RowVector3d&, const BiasRow&, double, double,

@@ -174,9 +174,12 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
   for (std::size_t k = 0; k + 1 < n; ++k) kept.add_step(k, w[k], delta[k]);
   // The same information handed to the constructor (the smoother's dead reckoning keeps
   // it before the chain exists): kept as above, and refused with a step missing.
-  ArrowheadChain given(n, q, w);
+  std::vector<ArrowheadChain::Symmetric3> upper;
+  for (const Mat3& block : w) upper.push_back(ArrowheadChain::Symmetric3::upper_of(block));
+  ArrowheadChain given(n, q, upper);
   EXPECT_THROW(given.add_step(0, w[0], delta[0]), std::logic_error);  // would make it 2W
-  EXPECT_THROW(ArrowheadChain(n, q, std::vector<Mat3>(w.begin() + 1, w.end())), std::invalid_argument);
+  EXPECT_THROW(ArrowheadChain(n, q, std::vector<ArrowheadChain::Symmetric3>(upper.begin() + 1, upper.end())),
+               std::invalid_argument);
   for (const unsigned pass : {1u, 2u, 3u}) {
     kept.reset_keeping_steps();
     // The blocks are not zeroed by reset_keeping_steps(): nothing but add_steps_again(),
