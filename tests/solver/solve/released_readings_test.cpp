@@ -195,57 +195,33 @@ TEST(ReleasedReadings, AWarmRerunIsTheSameBitForBit) {
   EXPECT_EQ(b.report.mode, SolveMode::warm);
   expect_same_solution(a, b);
   expect_released(released);
+  // The earlier result given up (solve_mission(..., MissionSolution&&), as `gesmi solve
+  // --from` calls it): the same solution, its increments taken, not copied.
+  MissionSolution given_up = first;
+  const Interval* increments[3] = {given_up.domains.dx.data(), given_up.domains.dy.data(), given_up.domains.dz.data()};
+  Mission released_again = m;
+  const MissionSolution e =
+      solve_mission(released_again, SolveOptions{}, MissionReadings::released_after_use, std::move(given_up));
+  EXPECT_EQ(e.report.mode, SolveMode::warm);
+  expect_same_solution(a, e);
+  EXPECT_EQ(e.domains.dx.data(), increments[0]) << "the increments were copied, not taken";
+  EXPECT_EQ(e.domains.dy.data(), increments[1]);
+  EXPECT_EQ(e.domains.dz.data(), increments[2]);
 
-  // A rerun the earlier result cannot warm-start (a mark edited) is solved cold.
+  // A rerun the earlier result cannot warm-start (a mark edited) is solved cold, the
+  // earlier result kept or given up.
   Mission edited = m;
   edited.mark_range[0] += 0.5;
-  Mission edited_released = edited;
+  Mission edited_released = edited, edited_released_again = edited;
   const MissionSolution c = solve_mission(edited, warm);
   const MissionSolution d = solve_mission(edited_released, warm, MissionReadings::released_after_use);
   ASSERT_EQ(c.report.mode, SolveMode::cold);
   ASSERT_TRUE(c.report.cold_fallback.has_value());
   expect_same_solution(c, d);
   expect_released(edited_released);
-}
-
-// solve_mission(..., MissionSolution&&), as `gesmi solve --from` calls it: the earlier
-// result given up, its increments moved into the new solution instead of copied. The
-// same solution bit for bit; a rerun it cannot warm-start is solved cold as before.
-TEST(ReleasedReadings, AWarmRerunFromAResultGivenUpIsTheSameAndTakesItsIncrements) {
-  Mission m = mission_with_margins(6, 0);
-  const MissionSolution first = solve_mission(m);
-  ASSERT_TRUE(first.report.consistent);
-  ASSERT_GE(m.truth_missed_marks.size(), 3u);
-  m.mark_time.push_back(m.truth_missed_marks[0]);
-  m.mark_mine.push_back(static_cast<std::int32_t>(m.truth_missed_marks[1]));
-  m.mark_range.push_back(m.truth_missed_marks[2]);
-  m.mark_side.push_back(1);
-  SolveOptions warm;
-  warm.warm_from = &first;
-  const MissionSolution a = solve_mission(m, warm);
-  ASSERT_EQ(a.report.mode, SolveMode::warm) << a.report.cold_fallback.value_or("");
-
-  MissionSolution given_up = first;
-  const Interval* increments[3] = {given_up.domains.dx.data(), given_up.domains.dy.data(), given_up.domains.dz.data()};
-  Mission released = m;
-  const MissionSolution b = solve_mission(released, SolveOptions{}, MissionReadings::released_after_use, std::move(given_up));
-  EXPECT_EQ(b.report.mode, SolveMode::warm);
-  expect_same_solution(a, b);
-  expect_released(released);
-  EXPECT_EQ(b.domains.dx.data(), increments[0]) << "the increments were copied, not taken";
-  EXPECT_EQ(b.domains.dy.data(), increments[1]);
-  EXPECT_EQ(b.domains.dz.data(), increments[2]);
-
-  // A rerun the earlier result cannot warm-start (a mark edited) is solved cold.
-  Mission edited = m;
-  edited.mark_range[0] += 0.5;
-  Mission edited_released = edited;
-  const MissionSolution c = solve_mission(edited, warm);
   MissionSolution given_up_again = first;
-  const MissionSolution d =
-      solve_mission(edited_released, SolveOptions{}, MissionReadings::released_after_use, std::move(given_up_again));
-  ASSERT_EQ(c.report.mode, SolveMode::cold);
-  expect_same_solution(c, d);
+  expect_same_solution(c, solve_mission(edited_released_again, SolveOptions{}, MissionReadings::released_after_use,
+                                        std::move(given_up_again)));
 }
 
 TEST(ReleasedReadings, AnInconsistentSolveIsDiagnosedOnTheMissionReadAgain) {
