@@ -46,9 +46,9 @@ struct Waterfall {
 };
 
 /// A waterfall computed earlier on the same navigation (a warm rerun's previous result),
-/// and which boxes are bitwise those of then: a cell whose position boxes (the step's
-/// and its neighbours', which fix the heading margin there) and mine box are is copied,
-/// not recomputed, so the result is the one a full computation gives. Made by
+/// and which boxes are bitwise those of then. A cell is copied, not recomputed, where its
+/// position boxes (the step's and its neighbours', which fix the heading margin there)
+/// and its mine box are, so the result is the one a full computation gives. Made by
 /// waterfall_before() while the earlier domains are at hand; they are not read after
 /// (a warm rerun frees its earlier tube before the waterfall, 480 MB at 10^7 steps).
 struct WaterfallBefore {
