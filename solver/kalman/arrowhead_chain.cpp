@@ -124,10 +124,8 @@ void ArrowheadChain::add_step(std::size_t k, const Mat3& w, const Vec3& delta) {
     throw std::logic_error("ArrowheadChain::add_step: the steps are kept or released; reset() first");
   require_factors("add_step");
   // Read as kept (its upper triangle, mirrored), so that add_steps_again() adds the same.
-  Symmetric3& kept = step_info_[k];
   const Symmetric3 added = Symmetric3::upper_of(w);
-  kept = {kept.xx + added.xx, kept.xy + added.xy, kept.xz + added.xz, kept.yy + added.yy, kept.yz + added.yz,
-          kept.zz + added.zz};
+  step_info_[k] = step_info_[k] + added;
   add_step_terms(k, added.full(), delta);
 }
 
@@ -270,14 +268,14 @@ void ArrowheadChain::solve() {
     const Vec3 c_k = s_k * eta;
     diag(k) = s_k;  // the information block of p_k was read at step k - 1
     eta_[k] = c_k;
+    const Mat3 w = k + 1 < n_ ? step_info_[k].full() : Mat3::Zero();  // the (k, k+1) block is -W
     if (!segment_b_.empty()) {
       const Mat3 p_k = s_k * t;  // P_k
       acc += symmetric_product(t.transpose(), p_k);  // T^T S T
       acc_eta.noalias() += t.transpose() * c_k;
-      if (k + 1 < n_) t = step_info_[k].full() * p_k;  // T_{k+1} (an event at k + 1 resets it below)
+      if (k + 1 < n_) t = w * p_k;  // T_{k+1} (an event at k + 1 resets it below)
     }
     if (k + 1 == n_) break;
-    const Mat3 w = step_info_[k].full();  // the (k, k+1) block is -W
     a = diag(k + 1) - symmetric_product(w * s_k, w);
     eta = eta_[k + 1] + w * c_k;
     if (const MatX* b = mixed_at(k + 1)) {

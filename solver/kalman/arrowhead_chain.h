@@ -35,6 +35,9 @@ class ArrowheadChain {
       m << xx, xy, xz, xy, yy, yz, xz, yz, zz;
       return m;
     }
+    friend Symmetric3 operator+(const Symmetric3& a, const Symmetric3& b) {
+      return {a.xx + b.xx, a.xy + b.xy, a.xz + b.xz, a.yy + b.yy, a.yz + b.yz, a.zz + b.zz};
+    }
   };
 
   /// n positions, q static unknowns (with a weak prior of information prior_info on

@@ -107,8 +107,7 @@ KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const 
         if (!keeps) return;
         if (delta.size() != k) throw std::logic_error("kalman_smooth: the odometry steps came out of order");
         // (as ArrowheadChain::add_step accumulates it on a zero block: the same bits)
-        const ArrowheadChain::Symmetric3 w = ArrowheadChain::Symmetric3::upper_of(information);
-        information_kept.push_back({0.0 + w.xx, 0.0 + w.xy, 0.0 + w.xz, 0.0 + w.yy, 0.0 + w.yz, 0.0 + w.zz});
+        information_kept.push_back(ArrowheadChain::Symmetric3{} + ArrowheadChain::Symmetric3::upper_of(information));
         delta.push_back(step);
       }
       void scalar(std::size_t, const Eigen::RowVector3d&, int, const Eigen::RowVector3d&, const BiasRow&, double, double,
