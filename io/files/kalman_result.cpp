@@ -104,6 +104,8 @@ void write_kalman_result(const KalmanFile& k, const std::string& path) {
     if (k.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*k.epoch));
     f.set_attribute("/", "noise_factor", k.options.noise_factor);
     f.set_attribute("/", "iterations", static_cast<std::int64_t>(r.iterations));
+    f.set_attribute("/", "start", std::string(kalman_start_name(k.options.start)));
+    f.set_attribute("/", "coarse_iterations", static_cast<std::int64_t>(r.coarse_iterations));
     f.set_attribute("/", "max_iterations", static_cast<std::int64_t>(k.options.max_iterations));
     f.set_attribute("/", "tolerance_m", k.options.tolerance);
     f.set_attribute("/", "last_step_m", r.last_step);

@@ -57,6 +57,12 @@ class ChainFactors : public MeasurementSink {
   Eigen::RowVectorXd hm_;        // reused
 };
 
+/// The weak prior on the first position (GPS may be absent: p_0 near the origin), as a
+/// residual at the point: the one factor not from a measurement but the biases' priors.
+inline void add_first_position_prior(ArrowheadChain& chain, const KalmanLinearisation& point) {
+  chain.add_position(0, Mat3d::Identity() * 1e-10, -point.position[0]);
+}
+
 /// Adds the factors to a chain.
 class ChainBuilder final : public ChainFactors {
  public:

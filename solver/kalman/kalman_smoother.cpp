@@ -9,20 +9,17 @@
 
 #include "solver/kalman/arrowhead_chain.h"
 #include "solver/kalman/chain_factors.h"
+#include "solver/kalman/coarse_start.h"
 #include "solver/kalman/residual_statistics.h"
 
 namespace gesmi {
 namespace {
 
-// A step at least this fraction of the previous one has stopped shrinking.
-constexpr double kStalledRatio = 0.9;
-
-// The weak horizontal prior on the first position (GPS may be absent: p_0 near the
-// origin) and the biases' zero-mean priors: the factors not from a measurement, as
-// residuals at the linearisation point (chain_factors.h).
+// The factors not from a measurement, as residuals at the linearisation point
+// (chain_factors.h): the weak prior on the first position and the biases' zero-mean priors.
 void add_priors(ArrowheadChain& chain, const ChainFactors& factors, const BiasVec& prior_sigma,
                 const KalmanLinearisation& lin) {
-  chain.add_position(0, Mat3d::Identity() * 1e-10, -lin.position[0]);
+  add_first_position_prior(chain, lin);
   if (!factors.biases()) return;
   for (int b = 0; b < kBiasCount; ++b)
     chain.add_static(factors.bias_offset() + static_cast<std::size_t>(b), -lin.bias[b],
@@ -52,6 +49,16 @@ Mat3d position_covariance(const Mat3d& chain_covariance, const ArrowheadChain& c
 }
 
 }  // namespace
+
+const char* kalman_start_name(KalmanStart start) {
+  return start == KalmanStart::coarse ? "coarse" : "dead-reckoning";
+}
+
+std::optional<KalmanStart> kalman_start_from_name(std::string_view name) {
+  for (const KalmanStart start : {KalmanStart::coarse, KalmanStart::dead_reckoning})
+    if (name == kalman_start_name(start)) return start;
+  return std::nullopt;
+}
 
 std::string KalmanOptions::validate() const {
   if (!(noise_factor > 0.0) || !std::isfinite(noise_factor)) return "the noise factor must be a positive number";
@@ -121,11 +128,15 @@ KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const 
     lin.mine_known.assign(k_mines, 0);
     linearise_measurements(m, model, {}, {o.noise_factor, false, FactorSet::odometry}, lin, dead_reckoning);
   }
-  lin.mine.assign(k_mines, Vec3d::Zero());  // placed at their first detection in the first pass
+  lin.mine.assign(k_mines, Vec3d::Zero());  // placed at their first detection in the first pass (the coarse chain's, below)
   lin.mine_known.assign(k_mines, 0);
   // Released before the chain's blocks are allocated: those reuse their memory.
   const std::vector<MarkSample> marks = mark_samples(m);
   if (releasable && fixed_odometry) release_after_dead_reckoning(*releasable);
+  // (it reads the time and depth, kept; before the chain takes the steps' information)
+  const CoarseStart coarse = fixed_odometry && o.start == KalmanStart::coarse && o.max_iterations >= 1
+                                 ? start_from_coarse_chain(m, model, fixes, o, marks, odometry_delta, step_information, lin)
+                                 : CoarseStart{};
   // One set of buffers for every linearisation.
   ArrowheadChain chain = fixed_odometry ? ArrowheadChain(n, q, std::move(step_information)) : ArrowheadChain(n, q);
 
@@ -133,6 +144,7 @@ KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const 
   result.steps = n;
   result.mines = k_mines;
   result.biases = o.biases;
+  result.coarse_iterations = coarse.linearisations;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   result.mine_mean.assign(3 * k_mines, nan);  // (a mine never detected stays NaN)
   result.mine_covariance.assign(9 * k_mines, nan);
@@ -192,7 +204,7 @@ KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const 
     result.converged = step <= o.tolerance;
     // Stalled: the steps stopped shrinking (a converging iteration shrinks them, by a third
     // per pass at the slowest seen) while they are negligible against the uncertainty.
-    const bool may_stall = !result.converged && step >= kStalledRatio * previous_step;
+    const bool may_stall = !result.converged && step >= kStalledStepRatio * previous_step;
     // The covariances: for the result after the last pass, and to judge a stall.
     if (result.converged || may_stall || it + 1 == o.max_iterations) {
       chain.solve_covariances();

@@ -19,8 +19,10 @@
 // same variance from its bound; the white noise keeps its variance. Every run ends with
 // the consistency checks of kalman_consistency.h.
 
+#include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "solver/kalman/kalman_consistency.h"
@@ -30,21 +32,42 @@
 
 namespace gesmi {
 
+/// A step at least this fraction of the previous one has stopped shrinking (converging
+/// passes shrink it by a third or more).
+inline constexpr double kStalledStepRatio = 0.9;
+
+/// Where the linearisations start.
+enum class KalmanStart {
+  /// The dead reckoning from the first fix, each mine placed at its first detection.
+  dead_reckoning,
+  /// The same problem solved first on a coarse chain (coarse_start.h): its positions at
+  /// every 64th sample and at the fixes' and marks' samples, interpolated in between,
+  /// and its mines. Without biases only (with them the dead reckoning's): the full chain's
+  /// passes then converge in one fewer on the reference mission. The result is judged
+  /// by the same rule, and agrees with the dead reckoning's start within the tolerance.
+  coarse,
+};
+
+/// "coarse", "dead-reckoning": the option's name for a start; std::nullopt for another text.
+const char* kalman_start_name(KalmanStart start);
+std::optional<KalmanStart> kalman_start_from_name(std::string_view name);
+
 struct KalmanOptions {
   double noise_factor = 1.0;  // multiplies every variance
-  int max_iterations = 20;    // cap on the linearisations of the range measurements
+  int max_iterations = 20;    // cap on the linearisations of the range measurements (and on the coarse chain's)
   /// m: converged when the last linearisation moved no coordinate more: a millimetre
   /// against metres of uncertainty.
   double tolerance = 1e-3;
   /// The chain solves for corrections (chain_factors.h), so its rounding floor is about
   /// 10^-13 m from 6·10^4 to 10^6 steps (docs/comparison.md, "When the smoother stops");
   /// a tolerance of 0, or a pathological mission, can still reach it. So the
-  /// linearisations also stop ("stalled") when the step stops shrinking (at least 0.9 of
-  /// the previous one; converging passes shrink it by a third or more) although no
+  /// linearisations also stop ("stalled") when the step stops shrinking (at least
+  /// kStalledStepRatio of the previous one) although no
   /// coordinate moved more than this fraction of its own smoothed standard deviation:
   /// what is left is noise against the estimate's uncertainty. 0: never stop so.
   double stall_fraction = 0.01;
   bool biases = false;  // the bias-aware variant
+  KalmanStart start = KalmanStart::coarse;
   std::string validate() const;
 };
 
@@ -54,7 +77,8 @@ struct KalmanResult {
   std::vector<double> covariance;  // steps x 3 x 3
   std::vector<double> mine_mean;   // mines x 3 (NaN for a mine never detected)
   std::vector<double> mine_covariance;  // mines x 3 x 3
-  int iterations = 0;      // linearisations done
+  int iterations = 0;      // linearisations done (of the full chain)
+  int coarse_iterations = 0;  // linearisations of the coarse chain it started from (0: the dead reckoning)
   double last_step = 0.0;  // m: the largest coordinate change of the last linearisation
   bool converged = false;  // last_step <= tolerance
   bool stalled = false;    // not converged, but stopped at the rounding floor (stall_fraction)

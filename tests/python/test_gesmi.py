@@ -153,6 +153,28 @@ def test_kalman_stops_at_the_rounding_floor():
         gesmi.kalman(m, stall_fraction=1.0)
 
 
+def test_kalman_starts_from_a_coarse_chain_or_the_dead_reckoning(tmp_path):
+    # Both starts end within the tolerance (1 mm) of each other; the coarse one needs
+    # fewer full linearisations here, and the command's file records which was used.
+    m = gesmi.simulate(seed=2, duration=1200)
+    coarse = gesmi.kalman(m)
+    dead_reckoning = gesmi.kalman(m, start="dead-reckoning")
+    assert coarse.converged and dead_reckoning.converged
+    assert coarse.coarse_iterations > 0 and dead_reckoning.coarse_iterations == 0
+    assert coarse.iterations < dead_reckoning.iterations
+    assert np.max(np.abs(coarse.mean - dead_reckoning.mean)) <= 1e-3
+    with pytest.raises(gesmi.FormatError):
+        gesmi.kalman(m, start="truth")
+    mission, out = str(tmp_path / "m.h5"), str(tmp_path / "k.h5")
+    assert run_gesmi("simulate", "--seed", "2", "--duration", "1200", "-o", mission).returncode == 0
+    r = run_gesmi("kalman", mission, "-o", out, "--start", "dead-reckoning")
+    assert r.returncode == 0, r.stderr
+    with h5py.File(out) as f:
+        start = f.attrs["start"]  # (a fixed-length string: bytes to h5py)
+        assert (start.decode() if isinstance(start, bytes) else start) == "dead-reckoning"
+        assert f.attrs["coarse_iterations"] == 0
+
+
 def test_localize_a_scenario():
     scenario = os.path.join(os.path.dirname(__file__), "..", "..", "missions", "localization", "triangle_two_hypotheses.yaml")
     r = gesmi.localize(scenario)

@@ -18,6 +18,7 @@
 #include "tools/gesmi/command_report.h"
 #include "tools/gesmi/kalman_report.h"
 #include "io/report/report_json.h"
+#include "io/text/message_text.h"
 
 namespace gesmi::cli {
 namespace {
@@ -41,13 +42,16 @@ int run_kalman(std::span<const std::string> args) {
       ("stall-fraction", po::value<std::string>()->default_value("0.01"),
        "also stop when the steps stop shrinking though none exceeds this fraction of its coordinate's standard "
        "deviation: the smoother's rounding floor, about 1e-13 m (0: never)")
-      ("biases", po::bool_switch(), "also estimate constant sensor biases (heading; DVL scale and offset per axis; depth scale and offset)");
+      ("biases", po::bool_switch(), "also estimate constant sensor biases (heading; DVL scale and offset per axis; depth scale and offset)")
+      ("start", po::value<std::string>()->default_value(kalman_start_name(KalmanOptions{}.start)),
+       "where the linearisations start: coarse (the same problem solved first on a chain of every 64th sample and "
+       "the fixes' and marks' samples; without --biases) or dead-reckoning");
   add_json_option(options, true);
   add_skip_existing(options);
   po::positional_options_description positional;
   positional.add("mission", 1);
   po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--max-iterations N] [--tolerance T] [--stall-fraction F] [--biases] [--json] [--skip-existing]"))
+  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--max-iterations N] [--tolerance T] [--stall-fraction F] [--biases] [--start coarse|dead-reckoning] [--json] [--skip-existing]"))
     return kExitOk;
   KalmanOptions o;
   o.noise_factor = parse_double("--noise-factor", v["noise-factor"].as<std::string>());
@@ -59,6 +63,10 @@ int run_kalman(std::span<const std::string> args) {
   o.stall_fraction = parse_non_negative("--stall-fraction", v["stall-fraction"].as<std::string>());
   if (!(o.stall_fraction < 1.0)) throw UsageError("--stall-fraction: must be below 1");
   o.biases = v["biases"].as<bool>();
+  const auto chosen_start = kalman_start_from_name(v["start"].as<std::string>());
+  if (!chosen_start)
+    throw UsageError("--start: expected coarse or dead-reckoning, got " + io::quoted_input(v["start"].as<std::string>()));
+  o.start = *chosen_start;
   if (const std::string why = o.validate(); !why.empty()) throw UsageError("--noise-factor: " + why);
   const std::string output = v["output"].as<std::string>();
   const auto file_options = {"mission", "config"};  // the options naming files read
@@ -129,6 +137,8 @@ int run_kalman(std::span<const std::string> args) {
                         {"containment_mines", io::number_json(c.mines)},
                         {"containment_mines_plane", io::number_json(c.mines_plane)},
                         {"iterations", file.result.iterations},
+                        {"start", kalman_start_name(o.start)},
+                        {"coarse_iterations", file.result.coarse_iterations},
                         {"last_step_m", io::number_json(file.result.last_step)},
                         {"last_step_sigmas", io::number_json(file.result.last_step_sigmas)},
                         {"converged", file.result.converged},
@@ -138,10 +148,12 @@ int run_kalman(std::span<const std::string> args) {
                         {"biases", o.biases}};
     add_kalman_checks(report["kalman"], file.result);
   } else {
-    std::printf("kalman smoother: %zu steps in %.1f ms, %s after %d linearisations (last step %.2g m), written to %s",
+    const std::string coarse =
+        k.coarse_iterations > 0 ? " (started from a coarse chain solved in " + std::to_string(k.coarse_iterations) + ")" : "";
+    std::printf("kalman smoother: %zu steps in %.1f ms, %s after %d linearisations%s (last step %.2g m), written to %s",
                 steps, file.timings_ms["smooth"],
                 k.converged ? "converged" : k.stalled ? "stopped at the rounding floor" : "NOT converged", k.iterations,
-                k.last_step, output.c_str());
+                coarse.c_str(), k.last_step, output.c_str());
     if (!std::isnan(c.horizontal))
       std::printf("; truth within 3 sigma: horizontal %.1f %%, vertical %.1f %% of steps; inside the 99.73 %% region: "
                   "%.0f %% of mines (3-D), %.0f %% (plane)",

@@ -28,6 +28,7 @@ void bind_kalman(py::module_& m) {
                                                           r.mine_covariance.data(), self);
                              })
       .def_readonly("iterations", &KalmanResult::iterations)
+      .def_readonly("coarse_iterations", &KalmanResult::coarse_iterations)
       .def_readonly("last_step", &KalmanResult::last_step)
       .def_readonly("converged", &KalmanResult::converged)
       .def_readonly("stalled", &KalmanResult::stalled)
@@ -85,7 +86,7 @@ void bind_kalman(py::module_& m) {
   m.def(
       "kalman",
       [](Mission& mission, double noise_factor, int max_iterations, double tolerance, bool biases,
-         double stall_fraction) {
+         double stall_fraction, const std::string& start) {
         io::validate_mission(mission, "mission");
         io::fill_local_gps(mission, "mission");
         KalmanOptions o;
@@ -94,6 +95,9 @@ void bind_kalman(py::module_& m) {
         o.tolerance = tolerance;
         o.biases = biases;
         o.stall_fraction = stall_fraction;
+        const auto chosen = kalman_start_from_name(start);
+        if (!chosen) throw io::FormatError("kalman: start: expected 'coarse' or 'dead-reckoning', got '" + start + "'");
+        o.start = *chosen;
         if (const std::string why = o.validate(); !why.empty()) throw io::FormatError("kalman: " + why);
         py::gil_scoped_release release;
         return kalman_smooth(mission, mission.model, gps_fixes(mission), o);
@@ -101,6 +105,7 @@ void bind_kalman(py::module_& m) {
       py::arg("mission"), py::arg("noise_factor") = 1.0, py::arg("max_iterations") = KalmanOptions{}.max_iterations,
       py::arg("tolerance") = KalmanOptions{}.tolerance, py::arg("biases") = false,
       py::arg("stall_fraction") = KalmanOptions{}.stall_fraction,
+      py::arg("start") = std::string(kalman_start_name(KalmanOptions{}.start)),
       "The Kalman smoother baseline (EKF + RTS, as `gesmi kalman`; biases=True as `--biases`)");
   m.def(
       "three_sigma_containment",
