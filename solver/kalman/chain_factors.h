@@ -58,7 +58,7 @@ class ChainFactors : public MeasurementSink {
 };
 
 /// The weak prior on the first position (GPS may be absent: p_0 near the origin), as a
-/// residual at the point: the one factor not from a measurement but the biases' priors.
+/// residual at the point (with the biases' priors, the only factors not from a measurement).
 inline void add_first_position_prior(ArrowheadChain& chain, const KalmanLinearisation& point) {
   chain.add_position(0, Mat3d::Identity() * 1e-10, -point.position[0]);
 }

@@ -128,7 +128,8 @@ KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const 
     lin.mine_known.assign(k_mines, 0);
     linearise_measurements(m, model, {}, {o.noise_factor, false, FactorSet::odometry}, lin, dead_reckoning);
   }
-  lin.mine.assign(k_mines, Vec3d::Zero());  // placed at their first detection in the first pass (the coarse chain's, below)
+  // The mines are placed at their first detection in the first pass (the coarse chain's, below).
+  lin.mine.assign(k_mines, Vec3d::Zero());
   lin.mine_known.assign(k_mines, 0);
   // Released before the chain's blocks are allocated: those reuse their memory.
   const std::vector<MarkSample> marks = mark_samples(m);
