@@ -33,6 +33,26 @@ Mission mission_at_nodes(const Mission& m, std::span<const std::size_t> nodes) {
 
 bool finite(const Vec3d& v) { return v.allFinite(); }
 
+// The odometry's vertical step k and its variance, given the horizontal step between the
+// point's positions when `conditioned` (smoothed_depths()), from W_k itself: the marginal
+// variance C_zz is W's xy cofactor over its determinant; given h, z's information is W_zz
+// and its mean moves by -W_zh r_h / W_zz (C_zh C_hh^-1 r_h in covariances). No inverse.
+std::pair<double, double> vertical_step(std::span<const Vec3d> delta, std::span<const ArrowheadChain::Symmetric3> information,
+                                        const FlatPoints& point, bool conditioned, std::size_t k) {
+  const ArrowheadChain::Symmetric3& w = information[k];
+  if (!conditioned) {
+    const double cofactor = w.xx * w.yy - w.xy * w.xy;
+    const double determinant = w.xx * (w.yy * w.zz - w.yz * w.yz) - w.xy * (w.xy * w.zz - w.yz * w.xz) +
+                               w.xz * (w.xy * w.yz - w.yy * w.xz);
+    return {delta[k][2], cofactor / determinant};
+  }
+  const double r_x = point[k + 1][0] - point[k][0] - delta[k][0], r_y = point[k + 1][1] - point[k][1] - delta[k][1];
+  return {delta[k][2] - (w.xz * r_x + w.yz * r_y) / w.zz, 1.0 / w.zz};
+}
+
+// A weak prior on the first depth (the readings decide it), as the chain's on p_0.
+constexpr double kFirstDepthPriorVariance = 1e10;
+
 }  // namespace
 
 std::vector<std::size_t> coarse_nodes(const Mission& m, std::span<const PositionFix> fixes, std::size_t stride) {
@@ -72,6 +92,40 @@ CoarseOdometry coarse_odometry(std::span<const std::size_t> nodes, std::span<con
   return coarse;
 }
 
+std::vector<double> smoothed_depths(const Mission& m, const SensorModel& model, double noise_factor,
+                                    std::span<const Vec3d> delta,
+                                    std::span<const ArrowheadChain::Symmetric3> information, const FlatPoints& point,
+                                    bool conditioned) {
+  const std::size_t n = m.size();
+  if (n == 0) return {};
+  if (delta.size() + 1 != n || information.size() + 1 != n || point.size() != n || m.depth.size() != n)
+    throw std::invalid_argument("smoothed_depths: one delta and one information per step, one point and depth per sample");
+  // Forward: the filtered mean and variance per sample (interleaved); backward: the
+  // Rauch-Tung-Striebel smoothing, written over the filtered means.
+  std::vector<double> filtered(2 * n);
+  double mean = point[0][2], variance = kFirstDepthPriorVariance;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k > 0) {
+      const auto [step, step_variance] = vertical_step(delta, information, point, conditioned, k - 1);
+      mean += step;
+      variance += step_variance;
+    }
+    const double reading = depth_variance(model, point[k][2], noise_factor), total = variance + reading;
+    mean += variance / total * (m.depth[k] - mean);
+    variance = variance * reading / total;  // (not times 1 - gain: after the weak prior that cancels)
+    filtered[2 * k] = mean;
+    filtered[2 * k + 1] = variance;
+  }
+  std::vector<double> depth(n);
+  depth[n - 1] = filtered[2 * (n - 1)];
+  for (std::size_t k = n - 1; k-- > 0;) {
+    const auto [step, step_variance] = vertical_step(delta, information, point, conditioned, k);
+    const double f = filtered[2 * k], p = filtered[2 * k + 1];
+    depth[k] = f + p / (p + step_variance) * (depth[k + 1] - (f + step));
+  }
+  return depth;
+}
+
 CoarseStart start_from_coarse_chain(const Mission& m, const SensorModel& model, std::span<const PositionFix> fixes,
                                     const KalmanOptions& o, std::span<const MarkSample> marks,
                                     std::span<const Vec3d> delta,
@@ -81,7 +135,15 @@ CoarseStart start_from_coarse_chain(const Mission& m, const SensorModel& model, 
   const std::vector<std::size_t> nodes = coarse_nodes(m, fixes, kCoarseStride);
   if (nodes.size() < 2 || 2 * nodes.size() > n) return {};  // not worth a second chain
   const std::size_t nc = nodes.size();
-  const Mission coarse = mission_at_nodes(m, nodes);
+  // The nodes held at the depths of every reading (a bound of 0.1 mm): their ranges then see
+  // the depths the full chain will.
+  std::vector<double> depth = smoothed_depths(m, model, o.noise_factor, delta, information, lin.position, false);
+  Mission coarse = mission_at_nodes(m, nodes);
+  for (std::size_t i = 0; i < nc; ++i) coarse.depth[i] = depth[nodes[i]];
+  std::vector<double>().swap(depth);
+  SensorModel held = model;
+  held.depth_absolute = 1e-4;
+  held.depth_relative = 0.0;
   CoarseOdometry odometry = coarse_odometry(nodes, delta, information);
   KalmanLinearisation point;
   point.position.assign(nc, Vec3d::Zero());
@@ -97,7 +159,7 @@ CoarseStart start_from_coarse_chain(const Mission& m, const SensorModel& model, 
     chain.reset_keeping_steps();
     chain.add_steps_again(odometry.delta, point.position.values());
     add_first_position_prior(chain, point);
-    linearise_measurements(coarse, model, fixes, measurements, point, builder);
+    linearise_measurements(coarse, held, fixes, measurements, point, builder);
     chain.solve_means();
     ++start.linearisations;
     double step = 0.0;  // (a NaN move leaves it: the finiteness check below refuses the result)
@@ -129,6 +191,8 @@ CoarseStart start_from_coarse_chain(const Mission& m, const SensorModel& model, 
   for (std::size_t i = 0; i < nc; ++i) lin.position[nodes[i]] = point.position[i];
   lin.mine = point.mine;
   lin.mine_known = point.mine_known;
+  depth = smoothed_depths(m, model, o.noise_factor, delta, information, lin.position, true);
+  for (std::size_t k = 0; k < n; ++k) lin.position[k][2] = depth[k];
   return start;
 }
 

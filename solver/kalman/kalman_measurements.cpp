@@ -162,7 +162,7 @@ void linearise_measurements(const Mission& m, const SensorModel& model, std::spa
   if (o.biases) depth_row[bias_depth_offset] = 1.0;
   for (std::size_t k = 0; k < n; ++k) {
     const double d = lin.position[k][2];
-    const double var = uniform_variance(model.depth_absolute + model.depth_relative * std::fabs(d), f);
+    const double var = depth_variance(model, d, f);
     if (o.biases) depth_row[bias_depth_scale] = d;
     sink.scalar(k, (1.0 + depth_scale) * ez, -1, none, depth_row, m.depth[k] + d * depth_scale, 1.0 / var, nullptr);
   }

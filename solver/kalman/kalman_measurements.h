@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -40,6 +41,11 @@ BiasVec bias_prior_sigma(const SensorModel& model, double noise_factor);
 
 /// Variance of a uniform law on [-bound, bound], scaled by the noise factor.
 inline double uniform_variance(double bound, double factor) { return factor * bound * bound / 3.0; }
+/// A depth reading's variance where the estimate's depth is `depth` (the bound grows with
+/// the depth; evaluated at the estimate, not at the reading: linearise_measurements()).
+inline double depth_variance(const SensorModel& model, double depth, double factor) {
+  return uniform_variance(model.depth_absolute + model.depth_relative * std::fabs(depth), factor);
+}
 
 /// Points p_0..p_{n-1} stored flat, three numbers each (x0 y0 z0 x1 ...): the
 /// linearisation point's positions, whose storage becomes the smoother's means (at 10^7

@@ -150,10 +150,10 @@ int run_kalman(std::span<const std::string> args) {
   } else {
     const std::string coarse =
         k.coarse_iterations > 0 ? " (started from a coarse chain solved in " + std::to_string(k.coarse_iterations) + ")" : "";
-    std::printf("kalman smoother: %zu steps in %.1f ms, %s after %d linearisations%s (last step %.2g m), written to %s",
+    std::printf("kalman smoother: %zu steps in %.1f ms, %s after %d linearisation%s%s (last step %.2g m), written to %s",
                 steps, file.timings_ms["smooth"],
                 k.converged ? "converged" : k.stalled ? "stopped at the rounding floor" : "NOT converged", k.iterations,
-                coarse.c_str(), k.last_step, output.c_str());
+                k.iterations == 1 ? "" : "s", coarse.c_str(), k.last_step, output.c_str());
     if (!std::isnan(c.horizontal))
       std::printf("; truth within 3 sigma: horizontal %.1f %%, vertical %.1f %% of steps; inside the 99.73 %% region: "
                   "%.0f %% of mines (3-D), %.0f %% (plane)",

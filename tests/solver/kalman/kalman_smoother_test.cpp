@@ -123,27 +123,30 @@ TEST(KalmanSmoother, ReportsItsContainmentOnSimulatedMissions) {
 }
 
 // The linearisations go on until no coordinate moves more than the tolerance: on
-// worst-case data two (the old fixed count) are not enough, the converged estimate is
-// a fixed point (one more linearisation moves it by no more than the tolerance plus the
-// chain's rounding floor), and a cap reached is reported as not converged.
+// worst-case data two from the dead reckoning (the old fixed count, and start) are not
+// enough, the converged estimate is a fixed point (one more linearisation moves it by no
+// more than the tolerance plus the chain's rounding floor), and a cap reached is reported
+// as not converged.
 TEST(KalmanSmoother, IteratesUntilTheStepIsBelowTheTolerance) {
   const Mission m = simulated_2400s(SimulatedErrors::worst_case);
   const auto fixes = gps_fixes(m);
-  const KalmanResult converged = kalman_smooth(m, m.model, fixes);
+  KalmanOptions from_dead_reckoning;
+  from_dead_reckoning.start = KalmanStart::dead_reckoning;
+  const KalmanResult converged = kalman_smooth(m, m.model, fixes, from_dead_reckoning);
   EXPECT_TRUE(converged.converged);
   EXPECT_LE(converged.last_step, KalmanOptions{}.tolerance);
   EXPECT_GT(converged.iterations, 2);
   std::printf("worst case, 2400 s: converged after %d linearisations, last step %.2g m\n", converged.iterations,
               converged.last_step);
 
-  KalmanOptions two;
+  KalmanOptions two = from_dead_reckoning;
   two.max_iterations = 2;
   const KalmanResult capped = kalman_smooth(m, m.model, fixes, two);
   EXPECT_FALSE(capped.converged);
   EXPECT_EQ(capped.iterations, 2);
   EXPECT_GT(capped.last_step, two.tolerance);
 
-  KalmanOptions one_more;
+  KalmanOptions one_more = from_dead_reckoning;
   one_more.max_iterations = converged.iterations + 1;
   one_more.tolerance = 0.0;
   const KalmanResult next = kalman_smooth(m, m.model, fixes, one_more);
