@@ -42,9 +42,10 @@ enum class KalmanStart {
   dead_reckoning,
   /// The same problem solved first on a coarse chain (coarse_start.h): its positions at
   /// every 64th sample and at the fixes' and marks' samples, interpolated in between,
-  /// and its mines. Without biases only (with them the dead reckoning's): the full chain's
-  /// passes then converge in one fewer on the reference mission. The result is judged
-  /// by the same rule, and agrees with the dead reckoning's start within the tolerance.
+  /// its mines, and every step's depth from all the depth readings. Without biases only
+  /// (with them the dead reckoning's): the full chain then converges after one pass on
+  /// the reference mission, where it took three. The result is judged by the same rule,
+  /// and agrees with the dead reckoning's start within the tolerance.
   coarse,
 };
 
