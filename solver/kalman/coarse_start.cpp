@@ -52,6 +52,9 @@ std::pair<double, double> vertical_step(std::span<const Vec3d> delta, std::span<
 
 // A weak prior on the first depth (the readings decide it), as the chain's on p_0.
 constexpr double kFirstDepthPriorVariance = 1e10;
+// The bound (m) of the coarse chain's depth readings at its nodes: the smoothed depths,
+// held there.
+constexpr double kHeldDepthBound = 1e-4;
 
 }  // namespace
 
@@ -135,14 +138,14 @@ CoarseStart start_from_coarse_chain(const Mission& m, const SensorModel& model, 
   const std::vector<std::size_t> nodes = coarse_nodes(m, fixes, kCoarseStride);
   if (nodes.size() < 2 || 2 * nodes.size() > n) return {};  // not worth a second chain
   const std::size_t nc = nodes.size();
-  // The nodes held at the depths of every reading (a bound of 0.1 mm): their ranges then see
-  // the depths the full chain will.
+  // The nodes held at the depths of every reading: their ranges then see the depths the
+  // full chain will.
   std::vector<double> depth = smoothed_depths(m, model, o.noise_factor, delta, information, lin.position, false);
   Mission coarse = mission_at_nodes(m, nodes);
   for (std::size_t i = 0; i < nc; ++i) coarse.depth[i] = depth[nodes[i]];
   std::vector<double>().swap(depth);
   SensorModel held = model;
-  held.depth_absolute = 1e-4;
+  held.depth_absolute = kHeldDepthBound;
   held.depth_relative = 0.0;
   CoarseOdometry odometry = coarse_odometry(nodes, delta, information);
   KalmanLinearisation point;
@@ -192,7 +195,8 @@ CoarseStart start_from_coarse_chain(const Mission& m, const SensorModel& model, 
   lin.mine = point.mine;
   lin.mine_known = point.mine_known;
   depth = smoothed_depths(m, model, o.noise_factor, delta, information, lin.position, true);
-  for (std::size_t k = 0; k < n; ++k) lin.position[k][2] = depth[k];
+  if (std::all_of(depth.begin(), depth.end(), [](double d) { return std::isfinite(d); }))
+    for (std::size_t k = 0; k < n; ++k) lin.position[k][2] = depth[k];  // (else the interpolated ones stay)
   return start;
 }
 

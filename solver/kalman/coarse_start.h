@@ -75,7 +75,8 @@ struct CoarseStart {
 /// steps stop shrinking (kStalledStepRatio) or options.max_iterations is reached. `delta`
 /// and `information` are the fixed odometry (no biases); `marks` the marks' samples.
 /// Nothing is moved (linearisations 0) when the coarse chain would hold more than half
-/// the samples, or when its solution is not finite.
+/// the samples, or when its solution is not finite; the depths of every step replace the
+/// interpolated ones only where all are finite.
 CoarseStart start_from_coarse_chain(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
                                     const KalmanOptions& options, std::span<const MarkSample> marks,
                                     std::span<const Vec3d> delta,
