@@ -31,8 +31,6 @@ Mission mission_at_nodes(const Mission& m, std::span<const std::size_t> nodes) {
   return coarse;
 }
 
-bool finite(const Vec3d& v) { return v.allFinite(); }
-
 // The odometry's vertical step k and its variance, given the horizontal step between the
 // point's positions when `conditioned` (smoothed_depths()), from W_k itself: the marginal
 // variance C_zz is W's xy cofactor over its determinant; given h, z's information is W_zz
@@ -155,7 +153,7 @@ CoarseStart start_from_coarse_chain(const Mission& m, const SensorModel& model, 
   point.mine_known.assign(k_mines, 0);
   ArrowheadChain chain(nc, 3 * k_mines, std::move(odometry.information));
   const MeasurementOptions measurements{o.noise_factor, false, FactorSet::without_odometry, marks};
-  CoarseStart start{0, nc};
+  CoarseStart start;
   double previous_step = std::numeric_limits<double>::infinity();
   while (start.linearisations < o.max_iterations) {
     ChainBuilder builder(chain, k_mines, false, point);
@@ -181,9 +179,9 @@ CoarseStart start_from_coarse_chain(const Mission& m, const SensorModel& model, 
     previous_step = step;
   }
   for (std::size_t i = 0; i < nc; ++i)
-    if (!finite(point.position[i])) return {};
+    if (!point.position[i].allFinite()) return {};
   for (std::size_t i = 0; i < k_mines; ++i)
-    if (point.mine_known[i] && !finite(point.mine[i])) return {};
+    if (point.mine_known[i] && !point.mine[i].allFinite()) return {};
   // Between two nodes the correction is interpolated (by the step's index).
   for (std::size_t i = 0; i + 1 < nc; ++i) {
     const std::size_t a = nodes[i], b = nodes[i + 1];

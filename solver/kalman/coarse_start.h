@@ -67,7 +67,6 @@ std::vector<double> smoothed_depths(const Mission& mission, const SensorModel& m
 
 struct CoarseStart {
   int linearisations = 0;  // of the coarse chain; 0: not started from it
-  std::size_t nodes = 0;
 };
 
 /// Moves `lin` (the dead reckoning: every position, no mine placed) to the coarse chain's
