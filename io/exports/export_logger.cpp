@@ -139,11 +139,11 @@ void export_mission_logger(const Mission& m, const std::string& source, const st
   const std::size_t n = m.size();
   std::vector<unsigned char> dvl(n, 0);
   const std::int64_t read_epoch = written_time(o.epoch, m.time.front(), 6, 0).seconds;
-  Mission grid;  // the truth on the DVL rows, at the times the import reads
+  Mission grid;  // the truth on every row, at the times the import reads
   for (std::size_t k = 0; k < n; ++k) {
     const bool in_gap = o.dvl_gap && m.time[k] >= o.dvl_gap->first && m.time[k] <= o.dvl_gap->second;
     dvl[k] = !in_gap && (k % o.dvl_every == 0 || k + 1 == n);
-    if (!dvl[k] || !m.has_truth()) continue;
+    if (!m.has_truth()) continue;
     grid.time.push_back(written_time(o.epoch, m.time[k], 6, read_epoch).read_back);
     grid.truth_x.push_back(m.truth_x[k]);
     grid.truth_y.push_back(m.truth_y[k]);

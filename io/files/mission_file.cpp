@@ -1,5 +1,6 @@
 #include "io/files/mission_file.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -25,9 +26,46 @@ constexpr const char* kFormat = "gesmi-mission";
 // 2: the sensor model gained max_jerk and step_model (version-1 files take their defaults).
 // 3: the sensor model gained max_depth_rate and max_altitude_rate; the optional root
 //    attribute epoch_utc (ISO 8601, whole seconds, Z).
-constexpr H5FormatVersions kVersions{.current = 3, .oldest = 1, .when_absent = 0};
+// 4: the sensor model gained max_speed and the surface regime's keys (surface_layer_depth,
+//    surface_max_jerk, surface_max_speed).
+constexpr H5FormatVersions kVersions{.current = 4, .oldest = 1, .when_absent = 0};
 
 std::string half_width_dataset(const NavChannel& c) { return "/nav/half_widths/" + std::string(c.name); }
+
+// What the import filled (ChannelFill), as attributes of the channel's half-width dataset.
+void write_fill(H5File& f, const std::string& dataset, const ChannelFill& fill) {
+  if (fill.key.empty()) return;
+  f.set_attribute(dataset, "filled_by", fill.key);
+  f.set_attribute(dataset, "samples_before_first_reading", static_cast<std::int64_t>(fill.before));
+  f.set_attribute(dataset, "samples_between_readings", static_cast<std::int64_t>(fill.between));
+  f.set_attribute(dataset, "samples_after_last_reading", static_cast<std::int64_t>(fill.after));
+  f.set_attribute(dataset, "first_reading", fill.first_reading);
+  f.set_attribute(dataset, "last_reading", fill.last_reading);
+}
+
+ChannelFill read_fill(const H5File& f, const std::string& dataset, std::size_t samples) {
+  ChannelFill fill;
+  const auto key = f.string_attribute(dataset, "filled_by");
+  if (!key) return fill;
+  const auto reject = [&](const std::string& why) { throw FormatError(f.path() + ": " + dataset + ": " + why); };
+  const auto known = {"surface_max_speed", "max_attitude_rate", "max_depth_rate", "max_altitude_rate"};
+  if (std::find(known.begin(), known.end(), *key) == known.end())
+    reject("attribute filled_by must name the model key the import filled with, found " + quoted_input(*key));
+  fill.key = *key;
+  std::size_t* counts[3] = {&fill.before, &fill.between, &fill.after};
+  const char* names[3] = {"samples_before_first_reading", "samples_between_readings", "samples_after_last_reading"};
+  for (int i = 0; i < 3; ++i) {
+    const auto v = f.int_attribute(dataset, names[i]);
+    if (!v || *v < 0 || static_cast<std::uint64_t>(*v) > samples) reject(std::string("attribute ") + names[i] + " must count samples");
+    *counts[i] = static_cast<std::size_t>(*v);
+  }
+  const auto first = f.double_attribute(dataset, "first_reading"), last = f.double_attribute(dataset, "last_reading");
+  if (!first || !last || !std::isfinite(*first) || !std::isfinite(*last)) reject("attributes first_reading and last_reading must be times");
+  fill.first_reading = *first;
+  fill.last_reading = *last;
+  if (fill.samples() > samples) reject("more samples filled than the mission has");
+  return fill;
+}
 
 // Units (UDUNITS, as CF writes them; per column where columns differ) of the mission's
 // datasets but its times, whose units follow the epoch (write_time_units).
@@ -280,8 +318,12 @@ Mission MissionReader::read(TruthReading truth) const {
   columns("/nav/velocity", velocity);
   m.altitude = f.read_doubles("/nav/altitude", 1);
   m.depth = f.read_doubles("/nav/depth", 1);
-  for (const NavChannel& c : nav_channels())
-    if (const std::string name = half_width_dataset(c); f.has(name)) m.half_widths.*c.half_widths = f.read_doubles(name, 1);
+  for (std::size_t i = 0; i < nav_channels().size(); ++i)
+    if (const std::string name = half_width_dataset(nav_channels()[i]); f.has(name)) {
+      m.half_widths.*nav_channels()[i].half_widths = f.read_doubles(name, 1);
+      m.half_widths.fill[i] = read_fill(f, name, m.time.size());
+      m.half_widths.fill_recorded = version >= 4;
+    }
   // Optional groups: absent, or complete.
   const auto require_all = [&](const std::string& group, std::initializer_list<const char*> datasets) {
     if (!f.has_group(group)) return false;
@@ -361,8 +403,11 @@ void write_mission(const Mission& m, const std::string& path) {
     f.write("/nav/velocity", interleave(m.vx, m.vy, m.vz), n, 3, 2);
     f.write("/nav/altitude", m.altitude, n);
     f.write("/nav/depth", m.depth, n);
-    for (const NavChannel& c : nav_channels())
-      if (const std::vector<double>& hw = m.half_widths.*c.half_widths; !hw.empty()) f.write(half_width_dataset(c), hw, n);
+    for (std::size_t i = 0; i < nav_channels().size(); ++i)
+      if (const std::vector<double>& hw = m.half_widths.*nav_channels()[i].half_widths; !hw.empty()) {
+        f.write(half_width_dataset(nav_channels()[i]), hw, n);
+        write_fill(f, half_width_dataset(nav_channels()[i]), m.half_widths.fill[i]);
+      }
     const std::size_t g = m.gps_time.size();
     f.write("/gps/time", m.gps_time, g);
     std::vector<double> lonlat(2 * g);
@@ -408,6 +453,64 @@ void write_mission(const Mission& m, const std::string& path) {
   out.commit();
 }
 
+namespace {
+
+// The channels a model key bounds, by their index in nav_channels(); `rate`: a bound on
+// how fast they change, which the import uses to fill samples without a reading (depth
+// near the surface, and the DVL, by surface_max_speed); the others bound each reading's
+// error, which per-sample half-widths replace.
+struct KeyChannels {
+  double SensorModel::*key;
+  const char* name;
+  std::vector<std::size_t> channels;  // roll 0, pitch 1, heading 2, vx 3, vy 4, vz 5, altitude 6, depth 7
+  bool rate;
+};
+
+std::string channel_text(std::size_t c) { return std::string(nav_channels()[c].name); }
+
+// A --config key that would change nothing, or make a per-sample bound wrong, is
+// refused with what holds it: per-sample half-widths replace the model's bound of
+// their channel (a log's own, or made at import from the model), and a rate key made
+// the import's fills (ChannelFill), which only a new import can redo.
+void refuse_per_sample_changes(const Mission& m, const SensorModel& model, const std::string& path) {
+  const KeyChannels keys[] = {
+      {&SensorModel::roll, "roll", {0}, false},
+      {&SensorModel::pitch, "pitch", {1}, false},
+      {&SensorModel::heading, "heading", {2}, false},
+      {&SensorModel::dvl_relative, "dvl_relative", {3, 4, 5}, false},
+      {&SensorModel::dvl_absolute, "dvl_absolute", {3, 4, 5}, false},
+      {&SensorModel::altitude, "altitude", {6}, false},
+      {&SensorModel::depth_absolute, "depth_absolute", {7}, false},
+      {&SensorModel::depth_relative, "depth_relative", {7}, false},
+      {&SensorModel::max_attitude_rate, "max_attitude_rate", {0, 1, 2}, true},
+      {&SensorModel::surface_max_speed, "surface_max_speed", {3, 4, 5, 7}, true},
+      {&SensorModel::max_altitude_rate, "max_altitude_rate", {6}, true},
+      {&SensorModel::max_depth_rate, "max_depth_rate", {7}, true},
+  };
+  const NavHalfWidths& h = m.half_widths;
+  for (const KeyChannels& k : keys) {
+    if (model.*k.key == m.model.*k.key) continue;
+    for (const std::size_t c : k.channels) {
+      if ((h.*nav_channels()[c].half_widths).empty()) continue;
+      const ChannelFill& fill = h.fill[c];
+      const std::string start = path + ": " + k.name + ": ";
+      if (!h.fill_recorded)
+        throw FormatError(start + "this mission bounds " + channel_text(c) + " per sample (its log's bounds, or "
+                          "enclosures between readings made at import), which --config cannot change: import the log "
+                          "again with --config");
+      if (!fill.key.empty())
+        throw FormatError(start + "the import filled " + std::to_string(fill.samples()) + " samples of " +
+                          channel_text(c) + " without a reading of their own from the model, which --config cannot "
+                          "redo: import the log again with --config");
+      if (!k.rate)
+        throw FormatError(start + "the log gives " + channel_text(c) + " its own bound per sample, which replaces the "
+                          "model's: change the log's half-width column instead");
+    }
+  }
+}
+
+}  // namespace
+
 std::optional<std::string> merge_model_config(Mission& m, const std::string& path) {
   SensorModel model = m.model;
   merge_sensor_model_yaml(path, model);
@@ -416,36 +519,7 @@ std::optional<std::string> merge_model_config(Mission& m, const std::string& pat
 
 std::optional<std::string> change_model(Mission& m, SensorModel model, const std::string& path) {
   const SensorModel& before = m.model;
-  // Per-sample half-widths replace the model's bound of their channel (a log's own,
-  // or computed between readings at import from the model then): a --config that
-  // changes that bound would change nothing, silently.
-  struct Bounded {
-    double SensorModel::*key;
-    const char* name;
-    std::vector<const std::vector<double>*> half_widths;
-  };
-  const auto& h = m.half_widths;
-  const Bounded bounded[] = {
-      {&SensorModel::roll, "roll", {&h.roll}},
-      {&SensorModel::pitch, "pitch", {&h.pitch}},
-      {&SensorModel::heading, "heading", {&h.heading}},
-      {&SensorModel::max_attitude_rate, "max_attitude_rate", {&h.roll, &h.pitch, &h.heading}},
-      {&SensorModel::dvl_relative, "dvl_relative", {&h.vx, &h.vy, &h.vz}},
-      {&SensorModel::dvl_absolute, "dvl_absolute", {&h.vx, &h.vy, &h.vz}},
-      {&SensorModel::depth_absolute, "depth_absolute", {&h.depth}},
-      {&SensorModel::depth_relative, "depth_relative", {&h.depth}},
-      {&SensorModel::max_depth_rate, "max_depth_rate", {&h.depth}},
-      {&SensorModel::altitude, "altitude", {&h.altitude}},
-      {&SensorModel::max_altitude_rate, "max_altitude_rate", {&h.altitude}},
-  };
-  for (const Bounded& b : bounded) {
-    if (model.*b.key == before.*b.key) continue;
-    for (const std::vector<double>* widths : b.half_widths)
-      if (!widths->empty())
-        throw FormatError(path + ": " + b.name + ": this mission bounds that sensor per sample (its log's bounds, or "
-                          "enclosures between readings made at import), which --config cannot change: import the log "
-                          "again with --config");
-  }
+  refuse_per_sample_changes(m, model, path);
   if (const auto gap = longest_gap(m.time); gap && model.step_model == StepModel::sample && before.step_model != StepModel::sample)
     throw FormatError(path + ": step_model: 'sample' cannot cross the mission's gap of " +
                       format_number(m.time[*gap + 1] - m.time[*gap]) + " s at t = " + format_number(m.time[*gap]) +

@@ -25,8 +25,13 @@ constexpr const char* kFormat = "gesmi-result";
 // 3: the waterfall stored as its feasible cells only; 4: the model keys of mission
 // format 3 (max_depth_rate, max_altitude_rate) and the mission's epoch_utc; 5: the
 // mission's origin (origin_latitude, origin_longitude, datum), for geodetic exports;
-// 6: XXH3-128 digests (attributes `xxh128`, `navigation_xxh128`, ...) instead of SHA-256.
+// 6: XXH3-128 digests (attributes `xxh128`, `navigation_xxh128`, ...) instead of SHA-256;
+// 7: the model keys of mission format 4 (max_speed, the surface regime's) and the step
+// regimes' report (/regimes).
 constexpr H5FormatVersions kVersions{.current = kResultFormat, .oldest = 1, .when_absent = 1};
+
+// The mission format whose model keys a result of this format holds.
+int model_keys_version(std::int64_t format_version) { return format_version >= 7 ? 4 : format_version >= 4 ? 3 : 2; }
 
 // Every dataset of a result, in the order the root digest lists them (format 3;
 // format 2 has no /waterfall/step and /waterfall/mine, its waterfall being dense).
@@ -68,6 +73,42 @@ InputDigestNames input_digest_names(DigestKind kind) {
   return {"navigation_" + name, "bounds_" + name, "marks_" + name};
 }
 
+// The readings' check (SolveReport::regimes) as root attributes (format 7): counts, and
+// the first times as shortest decimals separated by commas.
+struct RegimeAttributes {
+  std::size_t StepRegimeReport::*count;
+  std::vector<double> StepRegimeReport::*times;
+  const char* count_name;
+  const char* times_name;
+};
+constexpr RegimeAttributes kRegimeAttributes[] = {
+    {&StepRegimeReport::fallback_steps, &StepRegimeReport::fallback_times, "fallback_steps", "fallback_times"},
+    {&StepRegimeReport::speed_exceeded, &StepRegimeReport::speed_exceeded_times, "speed_exceeded_samples",
+     "speed_exceeded_times"},
+};
+
+std::string times_text(const std::vector<double>& times) {
+  std::string text;
+  for (const double t : times) text += (text.empty() ? "" : ",") + format_number(t);
+  return text;
+}
+
+void add_regime_fields(const StepRegimeReport& g, std::vector<std::pair<std::string, std::string>>& fields) {
+  fields.emplace_back("surface_steps", std::to_string(g.surface_steps));
+  for (const RegimeAttributes& a : kRegimeAttributes) {
+    fields.emplace_back(a.count_name, std::to_string(g.*a.count));
+    fields.emplace_back(a.times_name, times_text(g.*a.times));
+  }
+}
+
+void write_regimes(H5File& f, const StepRegimeReport& g) {
+  f.set_attribute("/", "surface_steps", static_cast<std::int64_t>(g.surface_steps));
+  for (const RegimeAttributes& a : kRegimeAttributes) {
+    f.set_attribute("/", a.count_name, static_cast<std::int64_t>(g.*a.count));
+    f.set_attribute("/", a.times_name, times_text(g.*a.times));
+  }
+}
+
 // The root attributes the root digest covers (timings are informative and left out).
 // `format_version`: the layout the fields are listed for (a result is always written
 // as today's, whatever format it was read from).
@@ -93,8 +134,9 @@ std::vector<std::pair<std::string, std::string>> root_fields(const SolveResult& 
     fields.emplace_back("origin_longitude", format_number(r.origin->longitude));
     fields.emplace_back("datum", kDatum);
   }
+  if (format_version >= 7) add_regime_fields(s.report.regimes, fields);
   // The /model attributes, exactly (shortest round-trip text): those the file's format has.
-  const int model_version = format_version >= 4 ? 3 : 2;
+  const int model_version = model_keys_version(format_version);
   for (const SensorModelField& f : sensor_model_fields())
     if (f.since_version <= model_version) fields.emplace_back("/model/" + std::string(f.key), format_number(s.model.*f.member));
   for (const SensorModelChoice& c : sensor_model_choices())
@@ -124,6 +166,31 @@ void write_bounds(H5File& f, const std::string& prefix, const std::vector<Interv
 
 [[noreturn]] void bad(const H5File& f, const std::string& object, const std::string& reason) {
   throw FormatError(f.path() + ": " + object + ": " + reason);
+}
+
+StepRegimeReport read_regimes(const H5File& f) {
+  StepRegimeReport g;
+  const auto count = [&](const char* name) {
+    const auto v = f.int_attribute("/", name);
+    if (!v || *v < 0) bad(f, "/", std::string("attribute ") + name + " must be a count (format 7)");
+    return static_cast<std::size_t>(*v);
+  };
+  g.surface_steps = count("surface_steps");
+  for (const RegimeAttributes& a : kRegimeAttributes) {
+    g.*a.count = count(a.count_name);
+    const auto text = f.string_attribute("/", a.times_name);
+    if (!text) bad(f, "/", std::string("missing attribute ") + a.times_name);
+    std::size_t at = 0;
+    while (at < text->size()) {
+      const std::size_t end = std::min(text->find(',', at), text->size());
+      const std::optional<double> t = parse_number(std::string_view(*text).substr(at, end - at));
+      if (!t || (g.*a.times).size() == StepRegimeReport::kShownTimes)
+        bad(f, "/", std::string("attribute ") + a.times_name + " must list at most 5 times separated by commas");
+      (g.*a.times).push_back(*t);
+      at = end + 1;
+    }
+  }
+  return g;
 }
 
 // Reads N x 3 bounds; an interval is [lo, hi] with lo <= hi, lo < +inf, hi > -inf,
@@ -322,6 +389,7 @@ void write_result(const SolveResult& r, const std::string& path) {
     f.set_attribute("/", "gesmi_version", r.version);
     if (r.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*r.epoch));
     write_origin(f, *r.origin);
+    write_regimes(f, s.report.regimes);
     for (const auto& [name, ms] : s.timings_ms) f.set_attribute("/", "timing_" + name + "_ms", ms);
     std::vector<std::pair<std::string, std::string>> digested = fields;
     for (const char* dataset : kDatasets) digested.emplace_back(dataset, *f.string_attribute(dataset, digest));
@@ -383,8 +451,9 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
     r.origin = GeoOrigin{number("origin_latitude", 90.0), number("origin_longitude", 180.0)};
     if (text("datum") != kDatum) bad(f, "/", std::string("attribute datum must be ") + kDatum);
   }
+  if (r.format_version >= 7) s.report.regimes = read_regimes(f);
   if (verified) {
-    s.model = read_model_attributes(f, "/model", r.format_version >= 4 ? 3 : 2);  // the model keys of its mission format
+    s.model = read_model_attributes(f, "/model", model_keys_version(r.format_version));
     const std::string mode = text("mode");
     s.report.mode = mode_named(mode);
     if (mode != solve_mode_name(s.report.mode)) bad(f, "/", "attribute mode is not one gesmi writes");

@@ -24,7 +24,7 @@
 namespace gesmi::io {
 
 /// The layout results are written in (docs/formats.md, "Result file").
-inline constexpr std::int64_t kResultFormat = 6;
+inline constexpr std::int64_t kResultFormat = 7;
 
 /// The digests of a result of that format: SHA-256 in formats 2 to 5, XXH3-128 from 6.
 constexpr DigestKind result_digest_kind(std::int64_t format_version) {

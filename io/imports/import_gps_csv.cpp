@@ -7,7 +7,8 @@
 
 namespace gesmi::io {
 
-GpsLog read_gps_csv(std::istream& in, const std::string& name, double first_time, double last_time) {
+GpsLog read_gps_csv(std::istream& in, const std::string& name, double first_time, double last_time,
+                    std::vector<UnusedFix>* unused, const std::string& why) {
   CsvReader csv(in, name);
   csv.read_header({"time", "longitude", "latitude"}, {"north_halfwidth", "east_halfwidth"});
   const int north = csv.column("north_halfwidth"), east = csv.column("east_halfwidth");
@@ -16,11 +17,15 @@ GpsLog read_gps_csv(std::istream& in, const std::string& name, double first_time
   while (csv.next()) {
     const double t = csv.number(0), lon = csv.number(1), lat = csv.number(2);
     if (!log.time.empty()) expect_increasing_time(csv, 0, t, log.time.back(), log.line.back());
+    if (std::fabs(lon) > 180.0) csv.fail(1, format_number(lon) + " is not in [-180, 180] degrees");
+    if (std::fabs(lat) > 90.0) csv.fail(2, format_number(lat) + " is not in [-90, 90] degrees");
+    if ((t < first_time || t > last_time) && unused) {
+      unused->push_back({name + ":" + std::to_string(csv.line()), t, why});
+      continue;
+    }
     if (t < first_time || t > last_time)
       csv.fail(0, format_number(t) + " s is outside the mission [" + format_number(first_time) + ", " +
                       format_number(last_time) + "] s");
-    if (std::fabs(lon) > 180.0) csv.fail(1, format_number(lon) + " is not in [-180, 180] degrees");
-    if (std::fabs(lat) > 90.0) csv.fail(2, format_number(lat) + " is not in [-90, 90] degrees");
     log.time.push_back(t);
     log.longitude.push_back(lon);
     log.latitude.push_back(lat);

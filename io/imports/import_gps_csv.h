@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "io/imports/nav_grid.h"
+
 namespace gesmi::io {
 
 struct GpsLog {
@@ -19,6 +21,9 @@ struct GpsLog {
 
 /// Reads and validates a GPS CSV whose fixes must lie in [first_time, last_time]
 /// (the navigation's span); FormatError "name:LINE: field: reason". May hold no fix.
-GpsLog read_gps_csv(std::istream& in, const std::string& name, double first_time, double last_time);
+/// With `unused`, a fix outside the span is left out and listed there instead, with
+/// `why` as its reason.
+GpsLog read_gps_csv(std::istream& in, const std::string& name, double first_time, double last_time,
+                    std::vector<UnusedFix>* unused = nullptr, const std::string& why = {});
 
 }  // namespace gesmi::io

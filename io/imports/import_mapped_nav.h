@@ -4,12 +4,9 @@
 // absolute times, and sensors at their own rates. An empty field, nan or NaN is "no
 // reading of this sensor at this time".
 //
-// The solver's grid is the rows with a DVL reading (vx, vy, vz together). Every other
-// channel (roll, pitch, heading, depth, altitude) is enclosed at grid times from its
-// own readings (solver/mission/between_readings.h): a channel read on every grid row
-// keeps the model's bounds; one read at other times gets per-sample half-widths. A DVL
-// gap is a long step, which the step model encloses with the model's rate bounds
-// (docs/model.md, "Gaps"). A channel silent longer than the gap limit is an error.
+// This reads each channel at its own times, with the bound of each reading; the
+// mission's grid is made from them and the GPS fixes (nav_grid.h). A DVL reading needs
+// vx, vy and vz on the same row.
 
 #include <cstdint>
 #include <istream>
@@ -19,6 +16,7 @@
 
 #include "io/imports/column_map.h"
 #include "io/imports/import_nav_csv.h"
+#include "io/imports/nav_grid.h"
 #include "solver/mission/sensor_model.h"
 
 namespace gesmi::io {
@@ -28,11 +26,12 @@ namespace gesmi::io {
 inline constexpr double kDefaultMaxGap = 60.0;
 
 struct MappedNavLog {
-  NavLog log;                         // on the grid
+  NavSeries series;                   // each channel's readings
   std::optional<std::int64_t> epoch;  // UTC seconds of t = 0, from absolute times
   SensorModel model;                  // the model, bounds widened by unit conversion
   Mission::ConversionMargins conversion_margins;  // what the widening added
-  std::vector<std::string> notes;     // what the import did, one line each, for the summary
+  double max_gap = kDefaultMaxGap;    // s
+  std::string limit;                  // " beyond the 60 s limit (max_gap in MAP)", for messages
 };
 
 /// `model`: the sensor model the bounds come from. `epoch`: t = 0 of a log in seconds

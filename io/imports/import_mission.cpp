@@ -61,8 +61,10 @@ void read_marks(Mission& m, const std::string& path, std::optional<int> mines, c
   replace_marks(m, std::move(marks));
 }
 
-// The fixes of an NMEA log inside the navigation's span, in seconds after its epoch.
-GpsLog read_nmea_gps(const std::string& path, const Mission& m, const ImportInputs& inputs, std::vector<std::string>& notes) {
+// The fixes of an NMEA log inside `span` (s after the epoch); the others are listed in
+// `unused`, with `why`.
+GpsLog read_nmea_gps(const std::string& path, const Mission& m, const ImportInputs& inputs, std::pair<double, double> span,
+                     const std::string& why, ImportNotes& notes) {
   if (!m.epoch)
     throw FormatError(path + ": NMEA fixes carry UTC times and the navigation has none: give its time as iso8601 or epoch in "
                              "the map, or --epoch for a log in seconds");
@@ -72,8 +74,9 @@ GpsLog read_nmea_gps(const std::string& path, const Mission& m, const ImportInpu
   std::size_t outside = 0, repeated = 0;
   for (std::size_t i = 0; i < fixes.time.size(); ++i) {
     const double t = fixes.time[i].since(*m.epoch);
-    if (t < m.time.front() || t > m.time.back()) {
+    if (t < span.first || t > span.second) {
       ++outside;
+      notes.unused_fixes.push_back({path + ":" + std::to_string(fixes.line[i]), t, why});
       continue;
     }
     if (!log.time.empty() && !(t > log.time.back())) {
@@ -90,9 +93,9 @@ GpsLog read_nmea_gps(const std::string& path, const Mission& m, const ImportInpu
     log.longitude.push_back(fixes.longitude[i]);
     log.line.push_back(fixes.line[i]);
   }
-  notes.push_back(path + ": " + std::to_string(log.time.size()) + " GGA fixes taken; skipped: " +
+  notes.lines.push_back(path + ": " + std::to_string(log.time.size()) + " GGA fixes taken; skipped: " +
                   std::to_string(fixes.bad_checksum) + " sentences with a bad checksum, " + std::to_string(fixes.no_fix) +
-                  " GGA without a fix, " + std::to_string(outside) + " fixes outside the navigation's time span, " +
+                  " GGA without a fix, " + std::to_string(outside) + " fixes not usable (below), " +
                   std::to_string(repeated) + " repeated; " + std::to_string(fixes.other) + " other sentences ignored");
   return log;
 }
@@ -103,45 +106,62 @@ bool is_nmea(const std::string& path, GpsFormat format) {
   return looks_like_nmea(in);
 }
 
+void move_nav(NavLog&& nav, Mission& m) {
+  m.time = std::move(nav.time);
+  m.roll = std::move(nav.roll);
+  m.pitch = std::move(nav.pitch);
+  m.heading = std::move(nav.heading);
+  m.vx = std::move(nav.vx);
+  m.vy = std::move(nav.vy);
+  m.vz = std::move(nav.vz);
+  m.altitude = std::move(nav.altitude);
+  m.depth = std::move(nav.depth);
+  m.half_widths = std::move(nav.half_widths);
+}
+
+// The GPS fixes within `span`; those outside listed in notes.unused_fixes with `why`,
+// but a GPS CSV's with `csv_refuses` (the exact-header navigation CSV: both gesmi's).
+GpsLog read_gps(const Mission& m, const ImportInputs& inputs, std::pair<double, double> span, const std::string& why,
+                bool csv_refuses, ImportNotes& notes) {
+  if (inputs.gps.empty()) return {};
+  if (is_nmea(inputs.gps, inputs.gps_format)) return read_nmea_gps(inputs.gps, m, inputs, span, why, notes);
+  std::ifstream in = open_input(inputs.gps);
+  return read_gps_csv(in, inputs.gps, span.first, span.second, csv_refuses ? nullptr : &notes.unused_fixes, why);
+}
+
+// A logger's export: the readings, then the fixes the navigation can place, then the
+// grid over both (nav_grid.h).
+GpsLog import_mapped(const std::string& nav_csv, const ImportInputs& inputs, Mission& m, ImportNotes& notes) {
+  std::ifstream in = open_input(nav_csv);
+  MappedNavLog mapped = read_mapped_nav(in, nav_csv, read_column_map(inputs.map, nav_map_schema(), true), m.model, m.epoch);
+  m.model = mapped.model;
+  m.conversion_margins = mapped.conversion_margins;
+  m.epoch = mapped.epoch;
+  const std::pair<double, double> span = usable_span(mapped.series, mapped.max_gap);
+  const std::string why = "no attitude or depth reading within max_gap (" + format_number(mapped.max_gap) +
+                          " s) of it, so nothing places the robot there (raise max_gap in " + inputs.map + ")";
+  GpsLog gps = read_gps(m, inputs, span, why, false, notes);
+  NavOnGrid on_grid = nav_on_grid(mapped.series, gps.time, m.model, mapped.max_gap, mapped.limit);
+  notes.lines.push_back(nav_csv + ": " + on_grid.grid_note);
+  for (const std::string& line : fill_lines(on_grid.log.half_widths)) notes.lines.push_back(nav_csv + ": " + line);
+  move_nav(std::move(on_grid.log), m);
+  return gps;
+}
+
 }  // namespace
 
-Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs, std::vector<std::string>* notes_out) {
-  std::vector<std::string> notes;
+Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs, ImportNotes* notes_out) {
+  ImportNotes notes;
   Mission m;
   m.model = model_from(inputs);
   m.epoch = inputs.epoch;
-  {
-    std::ifstream in = open_input(nav_csv);
-    NavLog nav;
-    if (inputs.map.empty()) {
-      nav = read_nav_csv(in, nav_csv);
-    } else {
-      MappedNavLog mapped = read_mapped_nav(in, nav_csv, read_column_map(inputs.map, nav_map_schema(), true), m.model, m.epoch);
-      nav = std::move(mapped.log);
-      m.model = mapped.model;
-      m.conversion_margins = mapped.conversion_margins;
-      m.epoch = mapped.epoch;
-      for (std::string& note : mapped.notes) notes.push_back(nav_csv + ": " + note);
-    }
-    m.time = std::move(nav.time);
-    m.roll = std::move(nav.roll);
-    m.pitch = std::move(nav.pitch);
-    m.heading = std::move(nav.heading);
-    m.vx = std::move(nav.vx);
-    m.vy = std::move(nav.vy);
-    m.vz = std::move(nav.vz);
-    m.altitude = std::move(nav.altitude);
-    m.depth = std::move(nav.depth);
-    m.half_widths = std::move(nav.half_widths);
-  }
   GpsLog gps;
-  if (!inputs.gps.empty()) {
-    if (is_nmea(inputs.gps, inputs.gps_format)) {
-      gps = read_nmea_gps(inputs.gps, m, inputs, notes);
-    } else {
-      std::ifstream in = open_input(inputs.gps);
-      gps = read_gps_csv(in, inputs.gps, m.time.front(), m.time.back());
-    }
+  if (inputs.map.empty()) {
+    std::ifstream in = open_input(nav_csv);
+    move_nav(read_nav_csv(in, nav_csv), m);
+    gps = read_gps(m, inputs, {m.time.front(), m.time.back()}, "outside the navigation log's time span", true, notes);
+  } else {
+    gps = import_mapped(nav_csv, inputs, m, notes);
   }
   if (inputs.origin) {
     m.origin = *inputs.origin;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "io/imports/import_gesmi_txt.h"
+#include "io/imports/nav_grid.h"
 #include "solver/mission/mission.h"
 
 namespace gesmi::io {
@@ -33,10 +34,17 @@ struct ImportInputs {
   std::optional<int> mines;         // default: the rows of truth_mines, else 0
 };
 
-/// `gesmi import nav`: a navigation CSV and the optional inputs. `notes` (when given)
-/// receives what the import did that the user should hear of (skipped sentences,
-/// channels enclosed between readings), one line each.
-Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs, std::vector<std::string>* notes = nullptr);
+/// What an import did that the user should hear of: one line each (skipped sentences,
+/// the grid, channels bridged or enclosed: Mission::half_widths.fill), and the GPS fixes
+/// it could not use, each a warning.
+struct ImportNotes {
+  std::vector<std::string> lines;
+  std::vector<UnusedFix> unused_fixes;
+};
+
+/// `gesmi import nav`: a navigation CSV and the optional inputs. A logger's export
+/// (inputs.map) spans its first to its last reading or GPS fix (nav_grid.h).
+Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs, ImportNotes* notes = nullptr);
 
 /// `gesmi import gesmi-txt`: a GESMI text log; inputs.gps and the truth files are
 /// not used (the log carries its own positions).

@@ -1,5 +1,7 @@
 #include "io/imports/import_truth_csv.h"
 
+#include <limits>
+
 #include "io/imports/csv_number.h"
 #include "io/imports/csv_reader.h"
 #include "io/text/message_text.h"
@@ -10,21 +12,23 @@ TruthTrack read_truth_csv(std::istream& in, const std::string& name, const std::
   CsvReader csv(in, name);
   csv.read_header({"time", "north", "east", "down"});
   TruthTrack track;
+  double previous = -std::numeric_limits<double>::infinity();
+  const auto missing = [&](std::size_t k) {
+    return "no row at the navigation sample " + std::to_string(k) + " (" + format_number(nav_time[k]) +
+           " s): the truth needs a row at every sample's time";
+  };
   while (csv.next()) {
     const std::size_t k = track.north.size();
     const double t = csv.number(0);
-    if (k >= nav_time.size())
-      csv.fail_line("more rows than the navigation's " + std::to_string(nav_time.size()) + " samples");
-    if (t != nav_time[k])
-      csv.fail(0, format_number(t) + " s differs from the navigation sample " + std::to_string(k) + " at " +
-                      format_number(nav_time[k]) + " s (one truth row per sample)");
+    if (!(t > previous)) csv.fail(0, format_number(t) + " s does not follow " + format_number(previous) + " s");
+    previous = t;
+    if (k < nav_time.size() && t > nav_time[k]) csv.fail(0, missing(k));
+    if (k >= nav_time.size() || t != nav_time[k]) continue;  // a row between the samples
     track.north.push_back(csv.number(1));
     track.east.push_back(csv.number(2));
     track.down.push_back(csv.number(3));
   }
-  if (track.north.size() != nav_time.size())
-    csv.fail_line("expected " + std::to_string(nav_time.size()) + " rows (one per navigation sample), found " +
-                  std::to_string(track.north.size()));
+  if (track.north.size() != nav_time.size()) csv.fail_line(missing(track.north.size()));
   return track;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Ground truth of a simulated mission as CSV (docs/formats.md), so that an exported
 // simulated mission imports back with its truth:
-//   truth.csv        time,north,east,down   (one row per navigation sample, same times)
+//   truth.csv        time,north,east,down   (a row at every navigation sample's time; rows
+//                                           between the samples are skipped)
 //   truth_mines.csv  mine,north,east,down   (mines 0..K-1 in order)
 // Local NED metres about the mission origin.
 
@@ -15,7 +16,7 @@ struct TruthTrack {
   std::vector<double> north, east, down;
 };
 
-/// Reads truth.csv; its times must equal `nav_time` row for row.
+/// Reads truth.csv at the times `nav_time` (increasing): every one must have its row.
 TruthTrack read_truth_csv(std::istream& in, const std::string& name, const std::vector<double>& nav_time);
 
 /// Reads truth_mines.csv; returns K x 3 row-major positions.

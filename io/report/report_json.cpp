@@ -130,13 +130,38 @@ json inconsistency_json(const Inconsistency& c, const std::string& text) {
 }
 
 json mission_json(const Mission& m) {
+  json filled = json::array();
+  for (std::size_t c = 0; c < nav_channels().size(); ++c) {
+    const ChannelFill& f = m.half_widths.fill[c];
+    if (f.samples() == 0) continue;
+    filled.push_back({{"channel", nav_channels()[c].name},
+                      {"key", f.key},
+                      {"before_first_reading", f.before},
+                      {"between_readings", f.between},
+                      {"after_last_reading", f.after},
+                      {"first_reading_s", f.first_reading},
+                      {"last_reading_s", f.last_reading}});
+  }
   return {{"samples", m.size()},
+          {"filled", filled},
           {"duration_s", m.size() ? m.time.back() - m.time.front() : 0.0},
           {"gps_fixes", m.gps_time.size()},
           {"marks", m.mark_count()},
           {"mines", m.mine_count},
           {"epoch_utc", m.epoch ? json(format_iso8601(*m.epoch)) : json(nullptr)}};
 }
+
+namespace {
+
+json regimes_json(const StepRegimeReport& r) {
+  return {{"surface_steps", r.surface_steps},
+          {"fallback_steps", r.fallback_steps},
+          {"fallback_times_s", r.fallback_times},
+          {"speed_exceeded_samples", r.speed_exceeded},
+          {"speed_exceeded_times_s", r.speed_exceeded_times}};
+}
+
+}  // namespace
 
 json solve_json(const Mission& m, const MissionSolution& s) {
   const SolveReport& r = s.report;
@@ -150,6 +175,7 @@ json solve_json(const Mission& m, const MissionSolution& s) {
               {"max_tube_width_m", number_json(s.domains.max_horizontal_width())},
               {"work_items", r.work_items},
               {"beyond_frame_zone_m", number_json(r.beyond_frame_zone)},
+              {"regimes", regimes_json(r.regimes)},
               {"cold_fallback", r.cold_fallback ? json(*r.cold_fallback) : json(nullptr)}};
   out["inconsistency"] = r.inconsistency ? inconsistency_json(*r.inconsistency, r.message) : json(nullptr);
   out["explained_by"] = r.explained_by ? constraints_json(*r.explained_by) : json(nullptr);

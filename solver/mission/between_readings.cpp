@@ -1,5 +1,6 @@
 #include "solver/mission/between_readings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -16,7 +17,8 @@ Interval widened(const ChannelReadings& r, std::size_t i, double t, double rate)
 
 }  // namespace
 
-ChannelAtGrid enclose_between_readings(const ChannelReadings& r, std::span<const double> grid, double rate, bool angle) {
+ChannelAtGrid enclose_between_readings(const ChannelReadings& r, std::span<const double> grid, double uniform_rate,
+                                       bool angle, std::span<const double> reading_rates) {
   ChannelAtGrid out;
   out.value.resize(grid.size());
   out.half_width.resize(grid.size());
@@ -26,6 +28,12 @@ ChannelAtGrid enclose_between_readings(const ChannelReadings& r, std::span<const
   for (std::size_t k = 0; k < grid.size(); ++k) {
     const double t = grid[k];
     while (after < n && r.time[after] < t) ++after;
+    // The rate between the readings around t (beyond the ends: the end reading's).
+    double rate = uniform_rate;
+    if (!reading_rates.empty())
+      rate = after == 0 ? reading_rates[0]
+             : after == n ? reading_rates[n - 1]
+                          : std::max(reading_rates[after - 1], reading_rates[after]);
     Interval box;
     if (after < n && r.time[after] == t) {
       out.value[k] = r.value[after];

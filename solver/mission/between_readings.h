@@ -35,7 +35,9 @@ struct ChannelAtGrid {
 /// `rate`: bound on |dy/dt|. `angle`: y is an angle (the reading after may be taken
 /// 2 pi turns away, to the branch closest to the reading before, when the bounds
 /// leave only that one). Grid times must be non-decreasing; readings non-empty.
+/// `reading_rates` (empty, or one per reading): the bound near each reading instead;
+/// between two readings the larger of theirs holds (the depth's rate at the surface).
 ChannelAtGrid enclose_between_readings(const ChannelReadings& readings, std::span<const double> grid, double rate,
-                                       bool angle);
+                                       bool angle, std::span<const double> reading_rates = {});
 
 }  // namespace gesmi

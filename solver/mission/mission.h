@@ -28,9 +28,28 @@ struct GeoOrigin {
   double longitude = 0.0;
 };
 
-/// Per-sample half-widths that override the model's bounds (GESMI text logs give them).
+/// How an import filled a channel's samples that have no reading of their own
+/// (io/imports/nav_grid.h): by which model key ("surface_max_speed" for the DVL
+/// bridged by the speed at the surface, "max_depth_rate" for depth enclosed between
+/// its readings, ...), and how many samples before its first reading, between its
+/// readings and after its last. `key` empty: none (the channel's half-widths, if any,
+/// are the log's own).
+struct ChannelFill {
+  std::string key;
+  std::size_t before = 0, between = 0, after = 0;
+  double first_reading = 0.0, last_reading = 0.0;  // s
+  std::size_t samples() const { return before + between + after; }
+};
+
+/// Per-sample half-widths that override the model's bounds (GESMI text logs give them;
+/// an import makes them where it fills samples without a reading).
 struct NavHalfWidths {
   std::vector<double> roll, pitch, heading, vx, vy, vz, depth, altitude;
+  /// Per channel, in nav_channels() order: what the import filled.
+  std::array<ChannelFill, 8> fill;
+  /// Whether `fill` is known (false for mission files older than format 4, which did
+  /// not record it: half-widths there may be the log's own or the import's).
+  bool fill_recorded = true;
   bool empty() const { return roll.empty(); }
 };
 

@@ -6,6 +6,10 @@
 
 namespace gesmi {
 
+double dvl_bound(const SensorModel& model, double v) {
+  return add_up(mul_up(model.dvl_relative, std::fabs(v)), model.dvl_absolute);
+}
+
 double depth_bound(const SensorModel& model, double depth) {
   return add_up(model.depth_absolute, mul_up(model.depth_relative, std::fabs(depth)));
 }
@@ -32,6 +36,10 @@ const std::vector<SensorModelField>& sensor_model_fields() {
       {"max_depth_rate", &SensorModel::max_depth_rate, "m/s", "bound on the depth rate, between a log's depth readings", 3},
       {"max_altitude_rate", &SensorModel::max_altitude_rate, "m/s", "bound on the altitude rate, between a log's altitude readings", 3},
       {"max_jerk", &SensorModel::max_jerk, "m/s³", "bound on the second derivative of the world velocity within a step (trapezoid step model)", 2},
+      {"max_speed", &SensorModel::max_speed, "m/s", "bound on the speed over ground while submerged, current included", 4},
+      {"surface_layer_depth", &SensorModel::surface_layer_depth, "m", "a step whose possible depths come this close to the surface takes the surface bounds", 4},
+      {"surface_max_jerk", &SensorModel::surface_max_jerk, "m/s³", "max_jerk in the surface regime (waves)", 4},
+      {"surface_max_speed", &SensorModel::surface_max_speed, "m/s", "bound on the speed over ground in the surface regime: the robot's, the waves' orbital velocity and the current", 4},
   };
   return fields;
 }
@@ -104,6 +112,10 @@ std::string SensorModel::validate() const {
   // The altitude is the floor's depth minus the robot's: over a flat floor it changes
   // exactly as fast as the depth.
   if (max_altitude_rate < max_depth_rate) return "max_altitude_rate must be at least max_depth_rate";
+  // The surface regime is the wider one: a step that may be in either takes its bounds.
+  if (surface_max_jerk < max_jerk) return "surface_max_jerk must be at least max_jerk";
+  if (surface_max_speed < max_speed) return "surface_max_speed must be at least max_speed";
+  if (max_speed <= 0.0) return "max_speed must be positive";
   return {};
 }
 

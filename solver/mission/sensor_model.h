@@ -61,12 +61,24 @@ struct SensorModel {
   // Bound on |d²(R v)/dt²| (the jerk of the position) within a step, for the
   // trapezoid step model (docs/model.md justifies 1 m/s³).
   double max_jerk = 1.0;            // m/s³
+  // The surface regime (docs/model.md, "Regimes"): a step whose possible depths reach
+  // the surface layer, or that holds a GPS fix, takes the surface jerk bound, and its
+  // displacement never exceeds the surface speed bound times its duration. Where the
+  // readings contradict a step's jerk bound, or the DVL has no reading, the step is
+  // bounded by its regime's speed alone.
+  double max_speed = 4.0;            // m/s: the robot's speed over ground submerged, current included
+  double surface_layer_depth = 1.0;  // m
+  double surface_max_jerk = 10.0;    // m/s³
+  double surface_max_speed = 6.5;    // m/s: the robot's own, the waves' orbital velocity and the current
   StepModel step_model = StepModel::trapezoid;
 
   /// Empty when every bound is finite and non-negative; otherwise the reason.
   std::string validate() const;
 };
 
+/// A DVL component's bound, dvl_relative |v| + dvl_absolute, rounded up: the solver's
+/// boxes and the importers' per-sample half-widths alike.
+double dvl_bound(const SensorModel& model, double v);
 /// A depth reading's bound, depth_absolute + depth_relative |depth|, rounded up: the one
 /// formula for the solver's boxes and the importers' per-sample half-widths.
 double depth_bound(const SensorModel& model, double depth);

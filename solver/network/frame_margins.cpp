@@ -25,18 +25,6 @@ float float_up(double x) {
   return f;
 }
 
-// How far a turn by at most `turn` and a scale error by at most `scale` move one
-// horizontal component of a step's increment: turn times the other component's
-// integral, plus turn²/2 times its own, plus scale times both. All terms are
-// non-negative, so the seven roundings to nearest are covered by a relative 8 units in
-// the last place, and underflow by the smallest normal number.
-double frame_widening(double turn, double scale, double other, double own) {
-  constexpr double up = 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
-  const double widening = (turn * other + 0.5 * turn * turn * own + scale * (other + own)) * up;
-  // (a zero margin times an infinite integral is NaN: the widening is then unbounded)
-  return std::isnan(widening) ? std::numeric_limits<double>::infinity() : widening + std::numeric_limits<double>::min();
-}
-
 // x > 0 rounded up to 11 significant bits, exactly (a carry out of the mantissa moves
 // to the exponent); infinity, NaN and x <= 0 unchanged.
 double rounded_up_to_11_bits(double x) {
@@ -48,6 +36,15 @@ double rounded_up_to_11_bits(double x) {
 }
 
 }  // namespace
+
+double frame_widening(double turn, double scale, double other, double own) {
+  // All terms are non-negative, so the seven roundings to nearest are covered by a
+  // relative 8 units in the last place, and underflow by the smallest normal number.
+  constexpr double up = 1.0 + 8.0 * std::numeric_limits<double>::epsilon();
+  const double widening = (turn * other + 0.5 * turn * turn * own + scale * (other + own)) * up;
+  // (a zero margin times an infinite integral is NaN: the widening is then unbounded)
+  return std::isnan(widening) ? std::numeric_limits<double>::infinity() : widening + std::numeric_limits<double>::min();
+}
 
 double speed_bound(const Mission& m) {
   require_readings(m, "speed_bound");
@@ -77,13 +74,18 @@ double speed_bound(const Mission& m) {
     if (k + 1 < m.size()) longest = std::max(longest, sub_up(m.time[k + 1], m.time[k]));
   }
   largest = largest * (1.0 + 16.0 * std::numeric_limits<double>::epsilon()) + std::numeric_limits<double>::min();
-  // Plus what max_acceleration adds within the longest step, on each axis (sqrt(3) < 1.7321).
-  return add_up(sqrt_up(largest), mul_up(1.7321, mul_up(m.model.max_acceleration, mul_up(0.5, longest))));
+  // Plus what the velocity may stray from its samples' boxes within the longest step, on
+  // each axis (sqrt(3) < 1.7321): max_acceleration dt / 2 where the rates hold, and in the
+  // surface regime, where only the jerk bounds it, J dt² / 8 from the interpolation
+  // between the samples (step_regimes.h; a step that falls back takes its speed bound).
+  const double rates = mul_up(m.model.max_acceleration, mul_up(0.5, longest));
+  const double jerk = mul_up(m.model.surface_max_jerk, mul_up(0.125, mul_up(longest, longest)));
+  return add_up(sqrt_up(largest), mul_up(1.7321, add_up(rates, jerk)));
 }
 
-SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& model) {
+SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& model, const StepRegimes& regimes) {
   const FrameMargins none{};
-  const SensorBoxes boxes(mission, model, none);
+  const SensorBoxes boxes(mission, model, none, nullptr, &regimes);
   const std::size_t n = mission.size();
   SensorPriors priors;
   priors.depth.resize(n);
@@ -118,7 +120,7 @@ SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& 
     // The kernel takes nearly every step; SensorBoxes the few it leaves (sensor_kernel.h).
     const StepIncrementArrays out{priors.dx.data(), priors.dy.data(), priors.dz.data(), priors.turn_north.data(),
                                   priors.turn_east.data()};
-    for (const std::size_t k : kernel_step_increments(mission, model, first, last, out)) scalar_step(k);
+    for (const std::size_t k : kernel_step_increments(mission, model, first, last, out, regimes)) scalar_step(k);
   });
   for (const auto& hulls : apart) priors.apart_hulls.insert(priors.apart_hulls.end(), hulls.begin(), hulls.end());
   return priors;

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "solver/mission/mission.h"
+#include "solver/network/step_regimes.h"
 #include "solver/network/tube_domains.h"
 
 namespace gesmi {
@@ -81,7 +82,8 @@ struct SensorPriors {
   std::vector<std::pair<std::size_t, Vec3I>> apart_hulls;
 };
 
-SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& model);
+/// Each step under its regime (`regimes`, of the same mission and model: classify_steps()).
+SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& model, const StepRegimes& regimes);
 
 /// The sensor domains under `frame`: each step's increments widened by the turn and the
 /// scale of the larger margins of its two samples; positions unbounded but for depth; no
@@ -120,6 +122,11 @@ void narrow_margins_over(FrameMarginValues& margins, const Mission& mission, con
 /// fixes that are true (not while some may be outliers). Empty when the mission has no
 /// frame margins.
 FrameMarginValues frame_margins_from_fixes(const Mission& mission, double max_speed);
+
+/// How far a turn by at most `turn` and a scale error by at most `scale` move one
+/// horizontal component of a velocity or an increment, rounded up: turn times the other
+/// component's magnitude, plus turn²/2 times its own, plus scale times both.
+double frame_widening(double turn, double scale, double other, double own);
 
 /// The largest |v| (m/s) the DVL boxes allow at any instant: at the samples, plus what
 /// max_acceleration adds within the longest step on each axis.

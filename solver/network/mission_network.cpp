@@ -74,12 +74,12 @@ std::vector<PositionFix> gps_fixes(const Mission& m) {
 }
 
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes) {
-  return build_network(mission, model, fixes, zone_frame(mission));
+  return build_network(mission, model, fixes, zone_frame(mission), nullptr, classify_steps(mission, model));
 }
 
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
-                             const FrameMargins& frame, const DvlExcerpt* dvl) {
-  const SensorBoxes boxes(mission, model, frame, dvl);
+                             const FrameMargins& frame, const DvlExcerpt* dvl, const StepRegimes& regimes) {
+  const SensorBoxes boxes(mission, model, frame, dvl, &regimes);
   MissionNetwork net;
   net.time = mission.time;
   net.mine_count = mission.mine_count;
@@ -117,7 +117,7 @@ MissionNetwork build_network(const Mission& mission, const SensorModel& model, s
 }
 
 TubeDomains sensor_domains(const Mission& mission, const SensorModel& model) {
-  return sensor_domains_in(frameless_sensor_priors(mission, model), zone_frame(mission));
+  return sensor_domains_in(frameless_sensor_priors(mission, model, classify_steps(mission, model)), zone_frame(mission));
 }
 
 void add_network_priors(TubeDomains& d, const MissionNetwork& network) {

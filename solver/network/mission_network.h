@@ -47,10 +47,11 @@ struct MissionNetwork {
 /// The detections (heading, DVL boxes and horizontal slack) and the offsets between
 /// samples take the mission's zone-wide frame margins, or `frame`'s per-sample ones.
 /// With `dvl`, the offsets read the DVL from it: the mission may have released its
-/// readings (DvlExcerpt, over the marks' and fixes' times).
+/// readings (DvlExcerpt, over the marks' and fixes' times). The offsets take each step's
+/// regime (`regimes`; the first form classifies the steps itself).
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes);
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
-                             const FrameMargins& frame, const DvlExcerpt* dvl = nullptr);
+                             const FrameMargins& frame, const DvlExcerpt* dvl, const StepRegimes& regimes);
 /// The mines each of the first `rows` marks may belong to (bit i: mine i) in a network
 /// of those marks alone: the allowed sets build_network() gives their detections.
 std::vector<std::uint64_t> allowed_mines_of_marks(const Mission& mission, std::size_t rows);
@@ -60,8 +61,8 @@ std::vector<std::uint64_t> allowed_mines_of_marks(const Mission& mission, std::s
 /// candidate mines.
 TubeDomains initial_domains(const Mission& mission, const SensorModel& model, const MissionNetwork& network);
 
-/// The two halves of initial_domains: what the sensors give (increments and depth,
-/// under the mission's zone-wide frame margins; frame_margins.h builds them for
+/// The two halves of initial_domains: what the sensors give (increments and depth, each
+/// step under its regime, under the mission's zone-wide frame margins; frame_margins.h builds them for
 /// per-sample margins), which does not depend on the fixes and marks, and the network's own priors
 /// (fixes on sample times, unbounded mines, candidate mines).
 TubeDomains sensor_domains(const Mission& mission, const SensorModel& model);

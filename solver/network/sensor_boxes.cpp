@@ -8,6 +8,8 @@
 
 namespace gesmi {
 
+const StepRegimes SensorBoxes::kSubmerged{};
+
 Interval SensorBoxes::reading(const std::vector<double>& values, const std::vector<double>& half_widths,
                               std::size_t k, double model_bound) const {
   const double bound = half_widths.empty() ? model_bound : half_widths[k];
@@ -34,7 +36,7 @@ Vec3I SensorBoxes::velocity(std::size_t k) const {
   double own[3], largest = 0.0;
   for (int i = 0; i < 3; ++i) {
     const double v = std::fabs(s.reading[i]);
-    own[i] = s.given[i] ? s.half_width[i] : add_up(mul_up(model_.dvl_relative, v), model_.dvl_absolute);
+    own[i] = s.given[i] ? s.half_width[i] : dvl_bound(model_, v);
     largest = add_up(largest, add_up(v, own[i]));
   }
   const double frame = mul_up(frame_scale(k), largest);
@@ -79,12 +81,33 @@ Interval SensorBoxes::step_duration(std::size_t k) const { return Interval(m_.ti
 
 Attitude<Interval> SensorBoxes::step_attitude(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const {
   const double e = excursion(model_.max_attitude_rate, k);
-  // Headings wrap at +-pi: take the representative of the next one closest to this
-  // one (2 pi turns change neither sine nor cosine).
-  Interval next_heading = b.heading;
+  return make_attitude(widen(a.roll, b.roll, e), widen(a.pitch, b.pitch, e), widen(a.heading, next_heading(b, k), e));
+}
+
+Interval SensorBoxes::next_heading(const SampleBoxes& b, std::size_t k) const {
+  // 2 pi turns change neither sine nor cosine.
   const double turns = std::round((m_.heading[k] - m_.heading[k + 1]) / (2.0 * std::numbers::pi));
-  if (turns != 0.0) next_heading = next_heading + Interval(turns) * Interval::two_pi();
-  return make_attitude(widen(a.roll, b.roll, e), widen(a.pitch, b.pitch, e), widen(a.heading, next_heading, e));
+  return turns == 0.0 ? b.heading : b.heading + Interval(turns) * Interval::two_pi();
+}
+
+Vec3I SensorBoxes::speed_box(std::size_t k) const {
+  const double v = regimes_->speed(model_, k);
+  return Vec3I(Interval(-v, v), Interval(-v, v), Interval(-v, v));
+}
+
+Vec3I SensorBoxes::speed_increment(std::size_t k, StepTurn* turn) const {
+  // |w| <= v at every instant, in any frame: no turn of the heading moves this box, but
+  // the sensitivities must still bound the integrals of |w_north| and |w_east|.
+  const Interval dt = step_duration(k);
+  const Vec3I v = speed_box(k);
+  if (turn) *turn = {mul_up(dt.hi(), v[0].hi()), mul_up(dt.hi(), v[1].hi()), std::nullopt};
+  return Vec3I(dt * v[0], dt * v[1], dt * v[2]);
+}
+
+Attitude<Interval> SensorBoxes::any_attitude() {
+  const Interval pi = Interval::pi(), half_pi = Interval::half_pi();
+  const Interval circle(-pi.hi(), pi.hi());
+  return make_attitude(circle, Interval(-half_pi.hi(), half_pi.hi()), circle);
 }
 
 Vec3I SensorBoxes::step_velocity(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const {
@@ -105,6 +128,10 @@ Vec3I SensorBoxes::rate_hull_increment(const SampleBoxes& a, const SampleBoxes& 
 
 Vec3I SensorBoxes::step_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k, StepTurn* turn) const {
   const Interval dt = step_duration(k);
+  // Steps whose jerk bound the readings contradict, and those of the models that rest on
+  // the rates where the rates may not hold, keep the speed bound alone.
+  if (regimes_->fallback(k) || (!rates_hold(k) && model_.step_model != StepModel::trapezoid))
+    return speed_increment(k, turn);
   switch (model_.step_model) {
     case StepModel::rate_hull:
       return rate_hull_increment(a, b, k, turn);
@@ -118,13 +145,15 @@ Vec3I SensorBoxes::step_increment(const SampleBoxes& a, const SampleBoxes& b, st
   // is dt/2 (w(t_k) + w(t_k+1)) - dt^3/12 w''(xi), with w(t_k) in sample k's box R v
   // and |w''| <= J.
   const Interval half = dt / Interval(2.0);
-  const Interval remainder = Interval(-1.0, 1.0) * (pow(dt, 3) / Interval(12.0)) * Interval(model_.max_jerk);
+  const Interval remainder = Interval(-1.0, 1.0) * (pow(dt, 3) / Interval(12.0)) * Interval(regimes_->jerk(model_, k));
   Vec3I d;
   for (int i = 0; i < 3; ++i) d[i] = half * (a.world_velocity[i] + b.world_velocity[i]) + remainder;
   // A turn moves only the sample values: the remainder bounds w'' in the local frame.
   if (turn)
     *turn = {mul_up(half.hi(), add_up(a.world_velocity[0].mag(), b.world_velocity[0].mag())),
              mul_up(half.hi(), add_up(a.world_velocity[1].mag(), b.world_velocity[1].mag())), std::nullopt};
+  // At the surface the waves break the rate bounds: the speed box bounds the step there.
+  if (!rates_hold(k)) return intersect_speed(d, k, turn);
   // Intersected with the rate hull, so never wider than it. The hull holds both samples'
   // world velocities widened by at least max_acceleration dt / 2 on every component (a
   // world component of R (v ± e) spans ± e at least: a rotation's rows have an L1 norm
@@ -151,14 +180,34 @@ Vec3I SensorBoxes::step_increment(const SampleBoxes& a, const SampleBoxes& b, st
   return d;
 }
 
+Vec3I SensorBoxes::intersect_speed(const Vec3I& trapezoid, std::size_t k, StepTurn* turn) const {
+  StepTurn speed_turn;
+  const Vec3I speed = speed_increment(k, &speed_turn);
+  Vec3I both;
+  for (int i = 0; i < 3; ++i) {
+    both[i] = intersect(trapezoid[i], speed[i]);
+    // Boxes that do not meet: the trapezoid alone, which holds the step (a later turn
+    // widens it; the speed box, true in every frame, would not need it).
+    if (both[i].is_empty()) return trapezoid;
+  }
+  if (turn) {
+    turn->north = std::max(turn->north, speed_turn.north);
+    turn->east = std::max(turn->east, speed_turn.east);
+  }
+  return both;
+}
+
 void SensorBoxes::offsets_between(std::size_t k, const Interval& alpha, const Interval& beta, Vec3I& forward,
                                   Vec3I& backward) const {
   const SampleBoxes a = sample(k), b = sample(k + 1);
-  const Vec3I v = body_to_world(step_attitude(a, b, k), step_velocity(a, b, k));  // over the whole step
+  // Over the whole step: the rate-bounded boxes, or where the rates may not hold, the
+  // regime's speed bound.
+  const Vec3I v = rates_hold(k) ? body_to_world(step_attitude(a, b, k), step_velocity(a, b, k)) : speed_box(k);
   for (int i = 0; i < 3; ++i) {
     forward[i] = alpha * v[i];
     backward[i] = beta * v[i];
   }
+  if (regimes_->fallback(k) || (!rates_hold(k) && model_.step_model != StepModel::trapezoid)) return;
   if (model_.step_model == StepModel::rate_hull) return;
   if (model_.step_model == StepModel::sample) {
     for (int i = 0; i < 3; ++i) {
@@ -172,7 +221,7 @@ void SensorBoxes::offsets_between(std::size_t k, const Interval& alpha, const In
   // J (dt a^2 / 4 - a^3 / 6). So p(t) - p(k) lies in
   // a (1 - a / (2 dt)) w_k + a^2 / (2 dt) w_k+1 ± J (dt a^2 / 4 - a^3 / 6),
   // and p(k+1) - p(t) in the same with beta and the samples swapped.
-  const Interval dt = step_duration(k), two_dt = Interval(2.0) * dt, jerk(model_.max_jerk);
+  const Interval dt = step_duration(k), two_dt = Interval(2.0) * dt, jerk(regimes_->jerk(model_, k));
   const auto partial = [&](const Interval& x, const Vec3I& near, const Vec3I& far, const Vec3I& rate_bound, Vec3I& out) {
     const Interval near_weight = x * (Interval(1.0) - x / two_dt);
     const Interval far_weight = sqr(x) / two_dt;
@@ -185,6 +234,7 @@ void SensorBoxes::offsets_between(std::size_t k, const Interval& alpha, const In
 }
 
 Attitude<Interval> SensorBoxes::attitude_between(std::size_t k) const {
+  if (!rates_hold(k)) return any_attitude();
   if (model_.step_model == StepModel::sample) return make_attitude(roll(k), pitch(k), heading(k));
   return step_attitude(k);
 }
@@ -201,8 +251,11 @@ Vec3I SensorBoxes::step_velocity(std::size_t k) const { return step_velocity(sam
 Interval SensorBoxes::step_altitude(std::size_t k) const {
   // a = floor depth - p_z changes at most at |v| (1 + slope), with the floor slope
   // bounded by mine_depth_band / sonar_max_range (the model's flat-floor budget).
-  const Vec3I v = step_velocity(k);
-  const double speed = add_up(add_up(v[0].mag(), v[1].mag()), v[2].mag());
+  double speed = regimes_->speed(model_, k);  // where the rates may not hold
+  if (rates_hold(k)) {
+    const Vec3I v = step_velocity(k);
+    speed = add_up(add_up(v[0].mag(), v[1].mag()), v[2].mag());
+  }
   const double slope = div_up(model_.mine_depth_band, model_.sonar_max_range);
   return widen_over_step(altitude(k), altitude(k + 1), mul_up(speed, add_up(1.0, slope)), k);
 }

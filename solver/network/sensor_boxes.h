@@ -14,6 +14,7 @@
 #include "solver/model/euler.h"
 #include "solver/network/dvl_excerpt.h"
 #include "solver/network/frame_margins.h"
+#include "solver/network/step_regimes.h"
 
 namespace gesmi {
 
@@ -29,11 +30,13 @@ class SensorBoxes {
   /// the frame's per-sample margins. The heading boxes grow by the frame's heading
   /// margin and the DVL boxes by its scale (the mission's zone-wide ones by default).
   /// With `dvl`, the DVL readings come from it (which must outlive this object), not
-  /// from the mission, which may have released them (DvlExcerpt).
+  /// from the mission, which may have released them (DvlExcerpt). With `regimes` (which
+  /// must outlive this object), each step takes its regime's bounds (step_regimes.h);
+  /// without, every step is submerged and unchecked.
   SensorBoxes(const Mission& mission, const SensorModel& model) : SensorBoxes(mission, model, zone_frame(mission)) {}
   SensorBoxes(const Mission& mission, const SensorModel& model, const FrameMargins& frame,
-              const DvlExcerpt* dvl = nullptr)
-      : m_(mission), model_(model), frame_(frame), dvl_(dvl) {}
+              const DvlExcerpt* dvl = nullptr, const StepRegimes* regimes = nullptr)
+      : m_(mission), model_(model), frame_(frame), dvl_(dvl), regimes_(regimes ? regimes : &kSubmerged) {}
 
   Interval roll(std::size_t k) const;
   Interval pitch(std::size_t k) const;
@@ -71,6 +74,9 @@ class SensorBoxes {
   };
   SampleBoxes sample(std::size_t k) const;
   Attitude<Interval> step_attitude(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
+  /// Sample k + 1's heading box b.heading on the turn of sample k's (headings wrap at
+  /// +-pi: the representative closest to sample k's reading).
+  Interval next_heading(const SampleBoxes& b, std::size_t k) const;
   Vec3I step_velocity(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
   /// Upper bounds of the integrals of |w_north| and |w_east| over a step, as the step
   /// model sees w: what a further turn of the heading widens the increment by
@@ -85,8 +91,12 @@ class SensorBoxes {
   Vec3I step_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k, StepTurn* turn = nullptr) const;
   /// dt times R v over the step's rate-bounded boxes: the rate_hull model.
   Vec3I rate_hull_increment(const SampleBoxes& a, const SampleBoxes& b, std::size_t k, StepTurn* turn = nullptr) const;
+  /// dt times the step regime's speed bound on every component: what a step whose other
+  /// bounds the readings contradict keeps (step_regimes.h).
+  Vec3I speed_increment(std::size_t k, StepTurn* turn = nullptr) const;
 
   const SensorModel& model() const { return model_; }
+  const StepRegimes& regimes() const { return *regimes_; }
 
  private:
   Interval reading(const std::vector<double>& values, const std::vector<double>& half_widths, std::size_t k,
@@ -96,11 +106,24 @@ class SensorBoxes {
   double excursion(double rate, std::size_t k) const;
   Interval step_duration(std::size_t k) const;
   static Interval widen(const Interval& a, const Interval& b, double excursion);
+  /// Whether the rate hull's premise (max_acceleration, max_attitude_rate) holds over
+  /// step k: submerged and not contradicted by the readings.
+  bool rates_hold(std::size_t k) const { return !regimes_->special(k); }
+  /// [-v, v] on each component, v the speed bound of step k's regime.
+  Vec3I speed_box(std::size_t k) const;
+  /// The trapezoid's increment of step k intersected with its speed increment; the turn's
+  /// sensitivities the larger of both.
+  Vec3I intersect_speed(const Vec3I& trapezoid, std::size_t k, StepTurn* turn) const;
+  /// The attitude over step k when no rate bounds it: every angle.
+  static Attitude<Interval> any_attitude();
+
+  static const StepRegimes kSubmerged;
 
   const Mission& m_;
   SensorModel model_;
   FrameMargins frame_;
   const DvlExcerpt* dvl_;
+  const StepRegimes* regimes_;
 };
 
 }  // namespace gesmi

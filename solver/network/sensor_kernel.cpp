@@ -235,19 +235,23 @@ void world_velocity_boxes(const Mission& mission, const SensorModel& model, std:
 }
 
 std::vector<std::size_t> kernel_step_increments(const Mission& mission, const SensorModel& model, std::size_t first,
-                                                std::size_t last, const StepIncrementArrays& out) {
+                                                std::size_t last, const StepIncrementArrays& out,
+                                                const StepRegimes& regimes) {
   std::vector<std::size_t> left;
   WorldVelocityBoxes w;
   for (std::size_t start = first; start < last; start += kBlock) {
     const std::size_t end = std::min(start + kBlock, last);
     world_velocity_boxes(mission, model, start, end + 1, w);
     step_block(mission.time.data(), w, start, end, model.step_model, model.max_jerk, out);
-    // Steps touching a skipped sample, and trapezoid steps whose rate hull may cut.
+    // Steps touching a skipped sample, steps of another regime, and trapezoid steps
+    // whose rate hull may cut.
     const std::size_t before = left.size();
     for (const std::size_t k : w.skipped) {
       if (k > start) left.push_back(k - 1);
       if (k < end) left.push_back(k);
     }
+    for (std::size_t k = start; k < end; ++k)
+      if (regimes.special(k)) left.push_back(k);
     if (model.step_model == StepModel::trapezoid)
       for (std::size_t k = start; k < end; ++k)
         if (trapezoid_takes_rate_hull(model, sub_up(mission.time[k + 1], mission.time[k])))

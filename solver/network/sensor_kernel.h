@@ -8,14 +8,16 @@
 //
 // Samples or steps the kernel does not take are returned to the caller, which computes
 // them with SensorBoxes: an angle box wider than the narrow-angle form allows (0.05 rad)
-// or a reading that is not finite, and the trapezoid steps whose rate hull must be
-// intersected too (SensorBoxes::step_increment: max_jerk dt > 6 max_acceleration).
+// or a reading that is not finite, the trapezoid steps whose rate hull must be
+// intersected too (SensorBoxes::step_increment: max_jerk dt > 6 max_acceleration), and
+// the steps of another regime than the submerged one (step_regimes.h).
 
 #include <cstddef>
 #include <vector>
 
 #include "solver/interval/interval.h"
 #include "solver/mission/mission.h"
+#include "solver/network/step_regimes.h"
 
 namespace gesmi {
 
@@ -47,7 +49,8 @@ struct StepIncrementArrays {
 /// sample; not rate_hull), without heading frame margin. Returns the steps it left to
 /// SensorBoxes, in increasing order; their entries in `out` are meaningless.
 std::vector<std::size_t> kernel_step_increments(const Mission& mission, const SensorModel& model, std::size_t first,
-                                                std::size_t last, const StepIncrementArrays& out);
+                                                std::size_t last, const StepIncrementArrays& out,
+                                                const StepRegimes& regimes);
 
 /// The depth box of every sample, bit for bit SensorBoxes::depth's (the same correctly
 /// rounded bounds, from the upward rounding mode instead of software rounding): the

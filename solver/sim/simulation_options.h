@@ -14,9 +14,13 @@ namespace gesmi {
 /// sinusoid per sensor, 0.99 * bound * sin(2 pi t / T_s + phi_s), with its period T_s
 /// uniform in [600 s, 2400 s] and its phase phi_s uniform in [0, 2 pi) drawn from the
 /// seed: always inside the bounds (the interval guarantee holds), but not the constant
-/// bias the bias-aware Kalman smoother assumes (docs/comparison.md).
-enum class SimulatedErrors { uniform, worst_case, at_samples, drifting };
-/// "uniform", "worst-case", "at-samples", "drifting"; parse returns false for another name.
+/// bias the bias-aware Kalman smoother assumes (docs/comparison.md); corners: at 99.9 %
+/// of the bound on the side that puts the truth on its box's corner where the
+/// trapezoid rule is weakest (the sign of the truth's second difference at the sample:
+/// adversarial for the jerk bound).
+enum class SimulatedErrors { uniform, worst_case, at_samples, drifting, corners };
+/// "uniform", "worst-case", "at-samples", "drifting", "corners"; parse returns false for
+/// another name.
 const char* simulated_errors_name(SimulatedErrors errors);
 bool parse_simulated_errors(std::string_view name, SimulatedErrors& errors);
 
@@ -29,6 +33,16 @@ struct SimulationOptions {
   double missed = 0.0;       // probability that a detection is dropped (stored in the truth)
   double unassociated = 0.0; // probability that a mark loses its mine number
   int outliers = 0;          // marks whose range is corrupted beyond its bound
+  // The surface (docs/model.md, "The surface"): the robot waits this long at the surface
+  // before the dive and after surfacing (0: the reference mission, submerged throughout),
+  // with GPS fixes at 1 Hz, in waves of this height and period.
+  double surface = 0.0;       // s
+  double wave_height = 0.0;   // m
+  double wave_period = 6.0;   // s
+  bool surface_dvl = false;   // the DVL keeps bottom lock at the surface (else it has no reading there)
+  // Vertical jerk bursts of 1 s while submerged, evenly spread (extra_motion.h).
+  int bursts = 0;
+  double burst_jerk = 10.0;   // m/s³
   /// Empty when usable; otherwise the reason.
   std::string validate() const;
 };

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
+#include "solver/mission/between_readings.h"
 #include "solver/model/euler.h"
+#include "solver/sim/extra_motion.h"
 #include "solver/sim/random_source.h"
 #include "solver/sim/survey_plan.h"
 
@@ -16,6 +19,9 @@ constexpr double kMaxTurnRate = 0.045;   // rad/s: below the model's 0.05
 constexpr double kMaxPitchRate = 0.004;  // rad/s
 constexpr double kMaxSpeedRate = 0.1;    // m/s^2: below the model's 0.2
 constexpr int kSubSteps = 2;             // midpoint rule per half step
+constexpr double kSurfaceDepth = 0.3;    // m: the robot at the surface
+constexpr double kClimbTime = 240.0;     // s before surfacing: time to climb from the survey depth
+constexpr double kStopTime = 30.0;       // s before surfacing: time to slow down to a halt
 
 double wrap(double angle) { return std::remainder(angle, kTwoPi); }
 
@@ -27,7 +33,8 @@ double true_heave(double t) { return 0.02 * std::sin(kTwoPi * t / 53.0); }
 // Reading errors strictly inside their bounds: uniform, a bias at 99 % of the
 // bound with a sign fixed per sensor (worst case), at 99 % of the bound against
 // `change`, how the true value moves over the coming step (at samples), or a slow
-// sinusoid of amplitude 99 % of the bound at time t (drifting).
+// sinusoid of amplitude 99 % of the bound at time t (drifting), or at 99.9 % of the bound
+// on the side of `curvature`, the truth's second difference at the sample (corners).
 class Errors {
  public:
   enum Sensor { roll, pitch, heading, vx, vy, vz, depth, altitude, gps_north, gps_east, mark, count };
@@ -40,7 +47,8 @@ class Errors {
         phases_[s] = rng_.uniform(0.0, kTwoPi);
       }
   }
-  double operator()(Sensor sensor, double bound, double t, double change = 0.0) {
+  double operator()(Sensor sensor, double bound, double t, double change = 0.0, double curvature = 0.0) {
+    if (mode_ == SimulatedErrors::corners) return 0.999 * bound * (curvature >= 0.0 ? 1.0 : -1.0);
     if (mode_ == SimulatedErrors::worst_case) return 0.99 * bound * signs_[sensor];
     if (mode_ == SimulatedErrors::at_samples && change != 0.0) return -0.99 * bound * (change > 0.0 ? 1.0 : -1.0);
     if (mode_ == SimulatedErrors::drifting) return 0.99 * bound * std::sin(kTwoPi * t / periods_[sensor] + phases_[sensor]);
@@ -88,6 +96,11 @@ std::vector<Waypoint> plan_for(double duration, double& path_length) {
 class Pilot {
  public:
   Pilot(const std::vector<Waypoint>& plan, double mean_speed) : plan_(plan), mean_speed_(mean_speed) {}
+  /// From pilot time `climb`, head for the surface; from `stop`, slow down to a halt.
+  void surface_at_end(double climb, double stop) {
+    climb_ = climb;
+    stop_ = stop;
+  }
   bool arrived() const { return target_ >= plan_.size(); }
 
   struct Rates {
@@ -105,9 +118,10 @@ class Pilot {
     const Waypoint& w = plan_[std::min(target_, plan_.size() - 1)];
     const double wanted = std::atan2(w.east - s.p[1], w.north - s.p[0]);
     const double turn = arrived() ? kMaxTurnRate : std::clamp(0.6 * wrap(wanted - s.heading), -kMaxTurnRate, kMaxTurnRate);
-    const double pitch_goal = std::clamp(0.02 * (s.p[2] - w.depth), -0.04, 0.04);
+    const double depth_goal = t >= climb_ ? kSurfaceDepth : w.depth;
+    const double pitch_goal = std::clamp(0.02 * (s.p[2] - depth_goal), -0.04, 0.04);
     const double pitch_rate = std::clamp((pitch_goal - s.pitch) / dt, -kMaxPitchRate, kMaxPitchRate);
-    const double speed_goal = mean_speed_ * (1.0 + 0.15 * std::sin(kTwoPi * (t + dt) / 900.0));
+    const double speed_goal = t >= stop_ ? 0.0 : mean_speed_ * (1.0 + 0.15 * std::sin(kTwoPi * (t + dt) / 900.0));
     const double speed_rate = std::clamp((speed_goal - s.speed) / dt, -kMaxSpeedRate, kMaxSpeedRate);
     for (int sub = 0; sub < kSubSteps; ++sub) {
       const double f = (sub + 0.5) / kSubSteps;  // midpoint of the sub-step
@@ -126,6 +140,7 @@ class Pilot {
   const std::vector<Waypoint>& plan_;
   double mean_speed_;
   std::size_t target_ = 0;
+  double climb_ = std::numeric_limits<double>::infinity(), stop_ = std::numeric_limits<double>::infinity();
 };
 
 TruthState start_state(const std::vector<Waypoint>& plan, double speed) {
@@ -157,13 +172,14 @@ const char* simulated_errors_name(SimulatedErrors errors) {
     case SimulatedErrors::worst_case: return "worst-case";
     case SimulatedErrors::at_samples: return "at-samples";
     case SimulatedErrors::drifting: return "drifting";
+    case SimulatedErrors::corners: return "corners";
   }
   return "uniform";
 }
 
 bool parse_simulated_errors(std::string_view name, SimulatedErrors& errors) {
-  for (const SimulatedErrors e :
-       {SimulatedErrors::uniform, SimulatedErrors::worst_case, SimulatedErrors::at_samples, SimulatedErrors::drifting})
+  for (const SimulatedErrors e : {SimulatedErrors::uniform, SimulatedErrors::worst_case, SimulatedErrors::at_samples,
+                                  SimulatedErrors::drifting, SimulatedErrors::corners})
     if (name == simulated_errors_name(e)) {
       errors = e;
       return true;
@@ -179,8 +195,159 @@ std::string SimulationOptions::validate() const {
   if (!(missed >= 0.0 && missed <= 1.0)) return "missed must be a probability in [0, 1]";
   if (!(unassociated >= 0.0 && unassociated <= 1.0)) return "unassociated must be a probability in [0, 1]";
   if (outliers < 0) return "outliers must be >= 0";
+  if (!(surface >= 0.0) || (surface > 0.0 && !(2.0 * surface < duration - 60.0)))
+    return "surface must be >= 0 s and leave at least 60 s submerged between the two surface phases";
+  if (!(wave_height >= 0.0 && wave_height <= 20.0)) return "wave-height must be in [0, 20] m";
+  if (!(wave_period >= 0.2 && wave_period <= 60.0)) return "wave-period must be in [0.2, 60] s";
+  if (bursts < 0 || bursts > 1000) return "bursts must be between 0 and 1000";
+  if (!(burst_jerk >= 0.0 && burst_jerk <= 1000.0)) return "burst-jerk must be in [0, 1000] m/s³";
   return {};
 }
+
+namespace {
+
+// The true values the sensors read at one instant: the flown state plus the extra motion.
+struct TrueSample {
+  Vec3d p;
+  double roll, pitch, heading;
+  Vec3d v;  // body frame
+  double altitude;
+};
+
+// At mission time t, `flown` s into the flight (the pilot's clock: the smooth motions the
+// guidance does not steer follow it). `waiting`: the robot waits at the surface, with
+// none of its own motion.
+TrueSample true_sample(const TruthState& s, double t, double flown, const ExtraMotion* extra, bool waiting) {
+  TrueSample x{s.p, true_roll(flown), s.pitch, s.heading,
+               waiting ? Vec3d(0.0, 0.0, 0.0) : Vec3d(s.speed, true_sway(flown), true_heave(flown)), 0.0};
+  if (extra) {
+    Vec3d displacement, velocity;
+    extra->at(t, displacement, velocity);
+    x.p += displacement;
+    x.v += world_to_body(make_attitude(x.roll, x.pitch, x.heading), velocity);
+  }
+  x.altitude = sea_floor_depth(x.p[0], x.p[1]) - x.p[2];
+  return x;
+}
+
+// The readings of sample k from the truth at k - 1, k and k + 1 (`before`, `at`,
+// `after`; the ends repeat `at`) and the rates of the step that follows.
+void read_sample(Mission& m, std::size_t k, const TrueSample& before, const TrueSample& at, const TrueSample& after,
+                 const Pilot::Rates& rates, double dt, const SensorModel& model, Errors& error) {
+  const double t = m.time[k];
+  const auto curve = [](double a, double b, double c) { return a - 2.0 * b + c; };
+  m.roll[k] = at.roll + error(Errors::roll, model.roll, t, after.roll - at.roll, curve(before.roll, at.roll, after.roll));
+  m.pitch[k] = at.pitch + error(Errors::pitch, model.pitch, t, rates.pitch, curve(before.pitch, at.pitch, after.pitch));
+  m.heading[k] = wrap(at.heading + error(Errors::heading, model.heading, t, rates.turn,
+                                         curve(before.heading, at.heading, after.heading)));
+  const Errors::Sensor dvl_sensors[3] = {Errors::vx, Errors::vy, Errors::vz};
+  std::vector<double>* dvl[3] = {&m.vx, &m.vy, &m.vz};
+  for (int i = 0; i < 3; ++i) {
+    // |error| <= (a|v| + b) / (1 + a) keeps v inside reading ± (a|reading| + b).
+    const double v = at.v[i];
+    const double bound = (model.dvl_relative * std::fabs(v) + model.dvl_absolute) / (1.0 + model.dvl_relative);
+    const double change = i == 0 ? rates.speed : (i == 1 ? true_sway(t + dt) : true_heave(t + dt)) - v;
+    (*dvl[i])[k] = v + error(dvl_sensors[i], bound, t, change, curve(before.v[i], v, after.v[i]));
+  }
+  const double z = at.p[2];
+  m.depth[k] = z + error(Errors::depth, (model.depth_absolute + model.depth_relative * std::fabs(z)) / (1.0 + model.depth_relative),
+                         t, after.p[2] - z, curve(before.p[2], z, after.p[2]));
+  m.altitude[k] = at.altitude + error(Errors::altitude, model.altitude, t, after.altitude - at.altitude,
+                                      curve(before.altitude, at.altitude, after.altitude));
+}
+
+// The DVL without bottom lock at the samples `unlocked`: no reading, bridged by the
+// surface speed as an import bridges a log's rows without one (io/imports/nav_grid.h);
+// its altitude enclosed between the locked readings.
+void drop_bottom_lock(Mission& m, const std::vector<unsigned char>& unlocked, const SensorModel& model) {
+  const std::size_t n = m.size();
+  ChannelReadings altitude;
+  for (std::size_t k = 0; k < n; ++k)
+    if (!unlocked[k]) {
+      altitude.time.push_back(m.time[k]);
+      altitude.value.push_back(m.altitude[k]);
+      altitude.half_width.push_back(model.altitude);
+    }
+  if (altitude.time.empty() || altitude.time.size() == n) return;
+  std::vector<double>* readings[3] = {&m.vx, &m.vy, &m.vz};
+  std::vector<double>* widths[3] = {&m.half_widths.vx, &m.half_widths.vy, &m.half_widths.vz};
+  ChannelFill dvl_fill{"surface_max_speed", 0, 0, 0, altitude.time.front(), altitude.time.back()};
+  for (std::size_t k = 0; k < n; ++k) {
+    if (unlocked[k]) ++(m.time[k] < altitude.time.front() ? dvl_fill.before : m.time[k] > altitude.time.back() ? dvl_fill.after : dvl_fill.between);
+    for (int i = 0; i < 3; ++i) {
+      if (unlocked[k]) (*readings[i])[k] = 0.0;
+      widths[i]->push_back(unlocked[k] ? model.surface_max_speed : dvl_bound(model, (*readings[i])[k]));
+    }
+  }
+  for (const std::size_t c : {3u, 4u, 5u}) m.half_widths.fill[c] = dvl_fill;
+  ChannelAtGrid at = enclose_between_readings(altitude, m.time, model.max_altitude_rate, false);
+  m.altitude = std::move(at.value);
+  m.half_widths.altitude = std::move(at.half_width);
+  m.half_widths.fill[6] = {"max_altitude_rate", dvl_fill.before, dvl_fill.between, dvl_fill.after, altitude.time.front(),
+                           altitude.time.back()};
+}
+
+
+// Where a mine crosses the starboard sonar plane below the robot within range: the
+// crossings at samples k - 1 and k (the closer of the two).
+struct SonarCrossings {
+  struct Crossing {
+    double time;
+    int mine;
+    double range;
+  };
+  std::vector<Vec3d> mines;
+  std::vector<Vec3d> previous_offset;  // per mine: the robot-frame offset at the previous sample
+  std::vector<char> previous_valid;
+  std::vector<Crossing> found;
+
+  explicit SonarCrossings(std::vector<Vec3d> mine_positions)
+      : mines(std::move(mine_positions)), previous_offset(mines.size()), previous_valid(mines.size(), 0) {}
+
+  void at(const Mission& m, std::size_t k, const TrueSample& x, const SensorModel& model) {
+    const Attitude<double> att = make_attitude(x.roll, x.pitch, x.heading);
+    for (std::size_t i = 0; i < mines.size(); ++i) {
+      const Vec3d e = x.p - mines[i];
+      if (std::hypot(e[0], e[1]) > model.sonar_max_range + 20.0) {
+        previous_valid[i] = 0;
+        continue;
+      }
+      const Vec3d eb = world_to_body(att, e);
+      if (previous_valid[i] && (eb[0] <= 0.0) != (previous_offset[i][0] <= 0.0)) {
+        const bool now_closer = std::fabs(eb[0]) <= std::fabs(previous_offset[i][0]);
+        const Vec3d close = now_closer ? eb : previous_offset[i];
+        const std::size_t kc = now_closer ? k : k - 1;
+        const double range = close.norm();
+        if (close[1] < 0.0 && close[2] < 0.0 && range < model.sonar_max_range - 2.0 &&
+            std::fabs(close[0]) < 0.9 * model.along_track_tolerance)
+          found.push_back({m.time[kc], static_cast<int>(i), range});
+      }
+      previous_offset[i] = eb;
+      previous_valid[i] = 1;
+    }
+  }
+};
+
+// GPS fixes in the local frame: at the first and the last sample, and every second at
+// the surface.
+void add_fixes(Mission& m, const SimulationOptions& o, const ExtraMotion& extra, const SensorModel& model, Errors& error) {
+  const std::size_t n = m.size();
+  const std::size_t every = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(o.rate)));
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool surface_fix = extra.at_surface(m.time[k]) && k % every == 0;
+    if (k != 0 && k != n - 1 && !surface_fix) continue;
+    m.gps_time.push_back(m.time[k]);
+    m.gps_north.push_back(m.truth_x[k] + error(Errors::gps_north, model.gps_metres, m.time[k]));
+    m.gps_east.push_back(m.truth_y[k] + error(Errors::gps_east, model.gps_metres, m.time[k]));
+    // Boxes of the metric bound, usable in memory; io/ recomputes them from the
+    // longitudes and latitudes when the mission is written and read back.
+    m.gps_north_halfwidth.push_back(model.gps_metres);
+    m.gps_east_halfwidth.push_back(model.gps_metres);
+    m.truth_gps_outlier.push_back(0);
+  }
+}
+
+}  // namespace
 
 Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
   RandomSource rng(o.seed);
@@ -190,84 +357,55 @@ Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
   m.mine_count = o.mines;
   const std::size_t n = static_cast<std::size_t>(std::floor(o.duration * o.rate + 1e-9)) + 1;
   const double dt = 1.0 / o.rate;
+  // The survey flies between the surface phases (the whole mission without them).
+  const double flight = o.duration - 2.0 * o.surface;
   double path_length = 0.0;
-  const std::vector<Waypoint> plan = plan_for(o.duration, path_length);
-  const double mean_speed = calibrated_speed(plan, path_length, o.duration, dt);
-  const std::vector<Vec3d> mines = reference_mines(o.mines, sea_floor_depth);
-  for (const Vec3d& mine : mines) m.truth_mines.insert(m.truth_mines.end(), {mine[0], mine[1], mine[2]});
+  const std::vector<Waypoint> plan = plan_for(flight, path_length);
+  const double mean_speed = calibrated_speed(plan, path_length, flight, dt);
+  SonarCrossings sonar(reference_mines(o.mines, sea_floor_depth));
+  for (const Vec3d& mine : sonar.mines) m.truth_mines.insert(m.truth_mines.end(), {mine[0], mine[1], mine[2]});
 
   for (std::vector<double>* v : {&m.time, &m.roll, &m.pitch, &m.heading, &m.vx, &m.vy, &m.vz, &m.altitude, &m.depth,
                                  &m.truth_x, &m.truth_y, &m.truth_z})
     v->resize(n);
 
+  const ExtraMotion extra(o);
+  const bool has_extra = o.surface > 0.0 || o.bursts > 0;
   TruthState s = start_state(plan, mean_speed);
   Pilot pilot(plan, mean_speed);
-  // Per mine: the robot-frame offset at the previous sample, for plane crossings.
-  std::vector<Vec3d> previous_offset(mines.size());
-  std::vector<char> previous_valid(mines.size(), 0);
-  struct Crossing {
-    double time;
-    int mine;
-    double range;
-  };
-  std::vector<Crossing> crossings;
-
+  if (o.surface > 0.0) {
+    s.p[2] = kSurfaceDepth;
+    s.speed = 0.0;
+    pilot.surface_at_end(flight - kClimbTime, flight - kStopTime);
+  }
+  std::vector<unsigned char> unlocked(n, 0);
+  // The truth at k - 1, k and k + 1: the flown state (stepped from k to k + 1 before
+  // sample k's readings, whose errors may depend on the step) plus the extra motion.
+  const auto waiting = [&](double t) { return o.surface > 0.0 && (t <= o.surface || t >= o.duration - o.surface); };
+  TrueSample at = true_sample(s, 0.0, -o.surface, has_extra ? &extra : nullptr, waiting(0.0)), before = at;
   for (std::size_t k = 0; k < n; ++k) {
     const double t = static_cast<double>(k) * dt;
     m.time[k] = t;
-    m.truth_x[k] = s.p[0];
-    m.truth_y[k] = s.p[1];
-    m.truth_z[k] = s.p[2];
-    const TruthState at_sample = s;
-    // The step that follows (its rates orient the at-samples errors).
-    const Pilot::Rates rates = k + 1 < n ? pilot.step(s, t, dt) : Pilot::Rates{};
-    const double roll = true_roll(t);
-    const Vec3d v_body(at_sample.speed, true_sway(t), true_heave(t));
-    // Readings.
-    m.roll[k] = roll + error(Errors::roll, model.roll, t, true_roll(t + dt) - roll);
-    m.pitch[k] = at_sample.pitch + error(Errors::pitch, model.pitch, t, rates.pitch);
-    m.heading[k] = wrap(at_sample.heading + error(Errors::heading, model.heading, t, rates.turn));
-    const auto dvl = [&](Errors::Sensor sensor, double v, double change) {
-      // |error| <= (a|v| + b) / (1 + a) keeps v inside reading ± (a|reading| + b).
-      const double bound = (model.dvl_relative * std::fabs(v) + model.dvl_absolute) / (1.0 + model.dvl_relative);
-      return v + error(sensor, bound, t, change);
-    };
-    m.vx[k] = dvl(Errors::vx, v_body[0], rates.speed);
-    m.vy[k] = dvl(Errors::vy, v_body[1], true_sway(t + dt) - v_body[1]);
-    m.vz[k] = dvl(Errors::vz, v_body[2], true_heave(t + dt) - v_body[2]);
-    m.depth[k] = at_sample.p[2] + error(Errors::depth, (model.depth_absolute + model.depth_relative * std::fabs(at_sample.p[2])) /
-                                                           (1.0 + model.depth_relative),
-                                        t, s.p[2] - at_sample.p[2]);
-    const double altitude = sea_floor_depth(at_sample.p[0], at_sample.p[1]) - at_sample.p[2];
-    m.altitude[k] = altitude + error(Errors::altitude, model.altitude, t,
-                                     sea_floor_depth(s.p[0], s.p[1]) - s.p[2] - altitude);
-
-    // Sonar plane crossings (starboard, below, within range).
-    const Attitude<double> att = make_attitude(roll, at_sample.pitch, at_sample.heading);
-    for (std::size_t i = 0; i < mines.size(); ++i) {
-      const Vec3d e = at_sample.p - mines[i];
-      if (std::hypot(e[0], e[1]) > model.sonar_max_range + 20.0) {
-        previous_valid[i] = 0;
-        continue;
-      }
-      const Vec3d eb = world_to_body(att, e);
-      if (previous_valid[i] && (eb[0] <= 0.0) != (previous_offset[i][0] <= 0.0)) {
-        const bool now_closer = std::fabs(eb[0]) <= std::fabs(previous_offset[i][0]);
-        const Vec3d at = now_closer ? eb : previous_offset[i];
-        const std::size_t kc = now_closer ? k : k - 1;
-        const double range = at.norm();
-        if (at[1] < 0.0 && at[2] < 0.0 && range < model.sonar_max_range - 2.0 &&
-            std::fabs(at[0]) < 0.9 * model.along_track_tolerance)
-          crossings.push_back({m.time[kc], static_cast<int>(i), range});
-      }
-      previous_offset[i] = eb;
-      previous_valid[i] = 1;
-    }
+    m.truth_x[k] = at.p[0];
+    m.truth_y[k] = at.p[1];
+    m.truth_z[k] = at.p[2];
+    // The step that follows (its rates orient the at-samples errors); the robot waits
+    // at the surface before the survey.
+    const bool flying = k + 1 < n && !waiting(t);
+    const Pilot::Rates rates = flying ? pilot.step(s, t - o.surface, dt) : Pilot::Rates{};
+    const TrueSample after =
+        k + 1 < n ? true_sample(s, t + dt, t + dt - o.surface, has_extra ? &extra : nullptr, waiting(t + dt)) : at;
+    read_sample(m, k, before, at, after, rates, dt, model, error);
+    unlocked[k] = extra.at_surface(t) && !o.surface_dvl;
+    sonar.at(m, k, at, model);
+    before = at;
+    at = after;
   }
 
   // Marks: missed ones go to the truth, outliers are corrupted, some lose their number.
+  const std::vector<SonarCrossings::Crossing>& crossings = sonar.found;
   std::vector<std::size_t> kept;
-  for (const Crossing& c : crossings) {
+  for (const SonarCrossings::Crossing& c : crossings) {
     if (rng.chance(o.missed)) {
       m.truth_missed_marks.insert(m.truth_missed_marks.end(), {c.time, static_cast<double>(c.mine), c.range});
       continue;
@@ -289,17 +427,8 @@ Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
     m.mark_range[j] = std::max(m.mark_range[j], 0.0);
   }
 
-  // GPS at the start and the end, in the local frame.
-  for (const std::size_t k : {std::size_t{0}, n - 1}) {
-    m.gps_time.push_back(m.time[k]);
-    m.gps_north.push_back(m.truth_x[k] + error(Errors::gps_north, model.gps_metres, m.time[k]));
-    m.gps_east.push_back(m.truth_y[k] + error(Errors::gps_east, model.gps_metres, m.time[k]));
-    // Boxes of the metric bound, usable in memory; io/ recomputes them from the
-    // longitudes and latitudes when the mission is written and read back.
-    m.gps_north_halfwidth.push_back(model.gps_metres);
-    m.gps_east_halfwidth.push_back(model.gps_metres);
-    m.truth_gps_outlier.push_back(0);
-  }
+  add_fixes(m, o, extra, model, error);
+  if (o.surface > 0.0 && !o.surface_dvl) drop_bottom_lock(m, unlocked, model);
   return m;
 }
 

@@ -13,6 +13,7 @@
 #include "solver/mission/sensor_model.h"
 #include "solver/network/constraint_ref.h"
 #include "solver/network/mission_solver.h"
+#include "solver/network/step_regimes.h"
 #include "solver/network/tube_domains.h"
 #include "solver/network/waterfall.h"
 
@@ -49,6 +50,9 @@ struct SolveReport {
   /// the result there assumes the robot stayed in the zone (frame_margins.h); 0 when
   /// the tube stays within it or the mission has no frame.
   double beyond_frame_zone = 0.0;
+  /// The steps in the surface regime, and where the readings contradict the model's
+  /// bounds (step_regimes.h): those steps fell back to wider bounds.
+  StepRegimeReport regimes;
 };
 
 struct MissionSolution {

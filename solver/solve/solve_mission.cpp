@@ -1,5 +1,6 @@
 #include "solver/solve/solve_mission.h"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <stdexcept>
@@ -45,19 +46,22 @@ std::vector<ConstraintRef> diagnose(const MissionNetwork& net, const TubeDomains
   return explaining;
 }
 
-// What every mode reads besides the mission: its GPS fixes, and the speed bound the
-// frame's margins take (frame_margins.h; computed once per solve). When the caller
+// What every mode reads besides the mission: its GPS fixes, its steps' regimes and the
+// readings' check (step_regimes.h), and the speed bound the frame's margins take
+// (frame_margins.h; the largest of the DVL's and the regimes'). When the caller
 // gave up the DVL and depth readings (MissionReadings): the mission to release them
 // from, and the DVL samples the networks still read (at the fixes' and marks' times).
 struct SolveInputs {
   std::vector<PositionFix> fixes;
+  StepRegimes regimes;
   double max_speed = 0.0;
   Mission* releasable = nullptr;
   std::optional<DvlExcerpt> dvl;
 };
 
 SolveInputs solve_inputs(const Mission& mission, Mission* releasable) {
-  SolveInputs in{gps_fixes(mission), has_frame_margins(mission) ? speed_bound(mission) : 0.0, releasable, {}};
+  SolveInputs in{gps_fixes(mission), classify_steps(mission, mission.model), 0.0, releasable, {}};
+  if (has_frame_margins(mission)) in.max_speed = std::max(speed_bound(mission), in.regimes.largest_speed(mission.model));
   if (releasable) {
     std::vector<double> times = mission.mark_time;
     for (const PositionFix& fix : in.fixes) times.push_back(fix.time);
@@ -67,7 +71,7 @@ SolveInputs solve_inputs(const Mission& mission, Mission* releasable) {
 }
 
 MissionNetwork network_in(const Mission& mission, const SolveInputs& in, const FrameMargins& frame) {
-  return build_network(mission, mission.model, in.fixes, frame, in.dvl ? &*in.dvl : nullptr);
+  return build_network(mission, mission.model, in.fixes, frame, in.dvl ? &*in.dvl : nullptr, in.regimes);
 }
 
 // Empties the readings that only the sensor enclosures read (and speed_bound(), done
@@ -95,7 +99,7 @@ Pass build_pass(const Mission& mission, const SolveInputs& in, const SensorPrior
 
 SensorPriors build_priors(const Mission& mission, const SolveInputs& in, MissionSolution& s) {
   const auto start = Clock::now();
-  SensorPriors priors = frameless_sensor_priors(mission, mission.model);
+  SensorPriors priors = frameless_sensor_priors(mission, mission.model, in.regimes);
   release_sensor_readings(in.releasable);
   s.timings_ms["build"] += elapsed_ms(start);
   return priors;
@@ -108,9 +112,11 @@ SensorPriors build_priors(const Mission& mission, const SolveInputs& in, Mission
 void diagnose_cold(const Mission& mission, const std::vector<PositionFix>& fixes, const SolverOptions& options,
                    MissionSolution& s) {
   const auto start = Clock::now();
-  const SensorPriors priors = frameless_sensor_priors(mission, mission.model);
+  const StepRegimes regimes = classify_steps(mission, mission.model);
+  const SensorPriors priors = frameless_sensor_priors(mission, mission.model, regimes);
   const FrameMargins zone = zone_frame(mission);
-  s.report.explained_by = diagnose(build_network(mission, mission.model, fixes, zone), sensor_domains_in(priors, zone), options);
+  s.report.explained_by =
+      diagnose(build_network(mission, mission.model, fixes, zone, nullptr, regimes), sensor_domains_in(priors, zone), options);
   s.timings_ms["diagnose"] = elapsed_ms(start);
 }
 
@@ -289,6 +295,7 @@ MissionSolution solve_in_mode(const Mission& mission, const SolveOptions& option
   stage("sensor enclosures", -1.0);
   auto start = Clock::now();
   const SolveInputs in = solve_inputs(mission, releasable);
+  s.report.regimes = in.regimes.report();
   MissionNetwork net;
   s.timings_ms["build"] = elapsed_ms(start);
   if (options.warm_from)

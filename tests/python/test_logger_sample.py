@@ -35,14 +35,30 @@ def test_the_logger_sample_imports_with_its_command_and_holds_the_truth(tmp_path
     r = run_import_command(tmp_path)
     assert r.returncode == 0, r.stderr
     assert "2 GGA fixes taken" in r.stdout and "t = 0 at 2026-05-14T08:00:00Z" in r.stdout
-    # The grid is the rows with a DVL reading: count them independently in the log.
+    # The grid is the rows with a DVL reading, and before the first and after the last of
+    # them the other rows and the fixes beyond every row: the sample's first and last rows
+    # have a DVL reading and its two fixes are at their times, so the grid is the DVL rows
+    # (counted independently in the log), every fix used.
     with open(tmp_path / "log.csv") as f:
         header = f.readline().rstrip("\n").split(";")
-        dvl = header.index("dvl_x")
+        dvl, depth = header.index("dvl_x"), header.index("depth_m")
         rows = [line.rstrip("\n").split(";") for line in f]
+    with open(tmp_path / "gps.nmea") as f:
+        fix_clock = [line.split(",")[1] for line in f if line.startswith("$GPGGA")]
+    assert fix_clock == [rows[i][0][11:19].replace(":", "") + "." + rows[i][0][20:23] for i in (0, -1)]
+    assert rows[0][dvl] not in ("", "NaN") and rows[-1][dvl] not in ("", "NaN")
     dvl_rows = [row for row in rows if row[dvl] not in ("", "NaN")]
     m = gesmi.read_mission(str(tmp_path / "mission.h5"))
     assert len(m) == len(dvl_rows) < len(rows)
+    assert "0 fixes not usable" in r.stdout and r.stderr == ""
+    assert "log.csv: grid: the %d rows with a DVL reading, of %d; longest step" % (len(dvl_rows), len(rows)) in r.stdout
+    # The depth at 1 Hz, read on the first and the last row: enclosed between its readings
+    # at the DVL rows without one; nothing bridged.
+    without_depth = sum(1 for row in dvl_rows if row[depth] == "")
+    assert rows[0][depth] != "" and rows[-1][depth] != "" and without_depth > 0
+    assert ("log.csv: depth: enclosed by max_depth_rate at %d samples without a reading: %d between its readings\n"
+            % (without_depth, without_depth)) in r.stdout, r.stdout
+    assert "bridged" not in r.stdout
     s = gesmi.solve(m)
     assert s.consistent
     truth = np.stack([m.truth_x, m.truth_y, m.truth_z], axis=1)

@@ -9,6 +9,7 @@ computations here: times are built as whole tenths after an epoch at a whole sec
 so the times the import reads are known exactly and the truth files can carry them."""
 import csv
 import datetime
+import json
 import math
 import os
 import re
@@ -216,11 +217,133 @@ def iso_seconds_after(text, epoch_seconds):
     return float(unix(dt) - epoch_seconds) + (float("0." + fraction) if fraction else 0.0)
 
 
-def expected_logger_grid(sim, dvl_every=2, gap=None):
+def logger_dvl_rows(sim, dvl_every=2, gap=None):
     """The DVL rows of a logger export, from the simulated times."""
     n = len(sim.time)
     return [k for k in range(n)
             if (k % dvl_every == 0 or k == n - 1) and not (gap and gap[0] <= sim.time[k] <= gap[1])]
+
+
+def expected_logger_grid(sim, dvl_every=2, gap=None, depth_every=10, max_gap=60.0):
+    """The mission's samples from a logger export (every row has the attitude, the depth
+    every `depth_every` rows): the DVL rows, and before the first and after the last of
+    them every other row within the usable span (docs/formats.md, "Multi-rate rows and
+    gaps"). The simulated fixes are on rows: they add no sample."""
+    n = len(sim.time)
+    dvl = logger_dvl_rows(sim, dvl_every, gap)
+    depth = [k for k in range(n) if k % depth_every == 0]
+    first = max(sim.time[0], sim.time[depth[0]]) - max_gap
+    last = min(sim.time[-1], sim.time[depth[-1]]) + max_gap
+    return sorted(set(dvl) | {k for k in range(n) if (k < dvl[0] or k > dvl[-1]) and first <= sim.time[k] <= last})
+
+
+# ----------------------------------------------------------------------------------------
+# The grid and the import's notes, computed here from a log's readings (docs/formats.md,
+# "Multi-rate rows and gaps", "NMEA 0183 fixes"; io/imports/nav_grid.h)
+
+ENCLOSED = ("roll", "pitch", "heading", "depth")  # the channels a usable fix needs a reading of nearby
+# The import's lines, in its order: the channel (vx for the DVL's three), how and by which model key.
+FILL_ORDER = (("vx", "bridged", "surface_max_speed"), ("roll", "enclosed", "max_attitude_rate"),
+              ("pitch", "enclosed", "max_attitude_rate"), ("heading", "enclosed", "max_attitude_rate"),
+              ("altitude", "enclosed", "max_altitude_rate"), ("depth", "enclosed", "max_depth_rate"))
+LOGGER_COLUMNS = {"roll": "roll_deg", "pitch": "pitch_deg", "heading": "hdg_deg", "vx": "dvl_x", "vy": "dvl_y",
+                  "vz": "dvl_z", "altitude": "alt_m", "depth": "depth_m"}
+NO_READING = ("", "nan", "NaN")
+
+
+def log_readings(rows, row_time, has):
+    """A log as the import reads it: `rows` the file's rows (line = index + 2), `row_time`
+    the time of each, `has(i, channel)` whether row i has a reading of the channel.
+    Returns the row count, the times and lines of the rows with some reading, and each
+    channel's reading times."""
+    present = [i for i in range(rows) if any(has(i, c) for c in FIELDS)]
+    return types.SimpleNamespace(
+        rows=rows, row_time=[row_time[i] for i in present], row_line=[i + 2 for i in present],
+        readings={c: [row_time[i] for i in range(rows) if has(i, c)] for c in FIELDS})
+
+
+def read_logger_readings(path, epoch_seconds):
+    """log_readings() of a logger export's log.csv, its times read as the import reads them."""
+    header, rows = read_semicolon_log(path)
+    col = {name: i for i, name in enumerate(header)}
+    times = [iso_seconds_after(row[col["timestamp"]], epoch_seconds) for row in rows]
+    return log_readings(len(rows), times, lambda i, c: rows[i][col[LOGGER_COLUMNS[c]]] not in NO_READING)
+
+
+def usable_span(log, max_gap=60.0):
+    """The times a fix can be used at: within max_gap of a reading of every attitude and
+    depth channel (the DVL and the altitude are bridged or enclosed without it)."""
+    return (max(log.readings[c][0] for c in ENCLOSED) - max_gap,
+            min(log.readings[c][-1] for c in ENCLOSED) + max_gap)
+
+
+def expected_grid(log, fix_times=(), max_gap=60.0):
+    """The mission's sample times: the DVL's readings, and before the first and after the
+    last of them the other rows with a reading and the fixes' times beyond every row,
+    within the usable span. Returns them, and the fixes used."""
+    first, last = usable_span(log, max_gap)
+    used = [t for t in fix_times if first <= t <= last]
+    dvl = log.readings["vx"]
+    extra = [t for t in log.row_time if (t < dvl[0] or t > dvl[-1]) and first <= t <= last]
+    extra += [t for t in used if t < log.row_time[0] or t > log.row_time[-1]]
+    return sorted(set(dvl) | set(extra)), used
+
+
+def expected_grid_note(log, grid):
+    """'grid: the D rows with a DVL reading, of M[, and B samples before and after them];
+    longest step X s (lines a-b | from T1 s to T2 s, a fix's time)'."""
+    line = {}
+    for t, n in zip(log.row_time, log.row_line):
+        line.setdefault(t, n)
+    steps = np.diff(grid)
+    at = int(np.argmax(steps))  # the first of the longest
+    a, b = grid[at], grid[at + 1]
+    where = ("lines %d-%d" % (line[a], line[b]) if a in line and b in line
+             else "from %s s to %s s, a fix's time" % (seconds_text(a), seconds_text(b)))
+    dvl = len(log.readings["vx"])
+    more = ", and %d samples before and after them" % (len(grid) - dvl) if len(grid) > dvl else ""
+    return "grid: the %d rows with a DVL reading, of %d%s; longest step %s s (%s)" % (
+        dvl, log.rows, more, seconds_text(steps[at]), where)
+
+
+def expected_fill(log, grid):
+    """Per channel (FILL_ORDER), the grid samples without a reading of it: before its
+    first reading, between its readings, after its last; with those readings' times."""
+    out = []
+    for channel, how, key in FILL_ORDER:
+        times = log.readings[channel]
+        own = set(times)
+        missing = [t for t in grid if t not in own]
+        out.append(types.SimpleNamespace(
+            channel=channel, how=how, key=key, first=times[0], last=times[-1],
+            before=sum(1 for t in missing if t < times[0]), after=sum(1 for t in missing if t > times[-1]),
+            between=sum(1 for t in missing if times[0] < t < times[-1])))
+    return out
+
+
+def expected_fill_lines(log, grid):
+    """The import's line for each channel it bridged or enclosed at some grid sample."""
+    lines = []
+    for f in expected_fill(log, grid):
+        parts = []
+        if f.before:
+            parts.append("%d before its first reading (%s s)" % (f.before, seconds_text(f.first)))
+        if f.between:
+            parts.append("%d between its readings" % f.between)
+        if f.after:
+            parts.append("%d after its last reading (%s s)" % (f.after, seconds_text(f.last)))
+        if parts:
+            lines.append("%s: %s by %s at %d samples without a reading: %s" % (
+                "vx, vy, vz" if f.channel == "vx" else f.channel, f.how, f.key, f.before + f.between + f.after,
+                ", ".join(parts)))
+    return lines
+
+
+def check_nav_notes(stdout, source, log, grid):
+    """The import's notes about the navigation log `source`: the grid, then one line per
+    channel it filled, nothing else."""
+    notes = [line[len(source) + 2:] for line in stdout.splitlines() if line.startswith(source + ": ")]
+    assert notes == [expected_grid_note(log, grid)] + expected_fill_lines(log, grid), stdout
 
 
 # ----------------------------------------------------------------------------------------
@@ -234,7 +357,7 @@ def test_logger_log_csv_holds_the_mission_at_its_rates(sim, logger):
     assert len(rows) == len(sim.time)
     col = {name: i for i, name in enumerate(header)}
     epoch = unix(DEFAULT_EPOCH)
-    grid = set(expected_logger_grid(sim, 2, (200.0, 230.0)))
+    grid = set(logger_dvl_rows(sim, 2, (200.0, 230.0)))
     for k, row in enumerate(rows):
         assert len(row) == len(header)
         assert re.fullmatch(r"\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{6}Z", row[col["timestamp"]]), row[0]
@@ -263,12 +386,15 @@ def test_logger_export_reimports_with_its_own_command_and_holds_the_truth(sim, l
     r = reimported.result
     assert r.returncode == 0, r.stderr
     assert r.stderr == ""
-    # The DVL rows of log.csv, counted here: the imported mission's samples.
+    # The DVL rows of log.csv, counted here. The first and the last row have a DVL reading
+    # (the gap is inside) and the fixes are on rows: the imported mission's samples.
     header, rows = read_semicolon_log(os.path.join(logger, "log.csv"))
     dvl_x = header.index("dvl_x")
-    dvl_rows = [row for row in rows if row[dvl_x] not in ("", "NaN", "nan")]
+    dvl_rows = [row for row in rows if row[dvl_x] not in NO_READING]
+    assert rows[0][dvl_x] not in NO_READING and rows[-1][dvl_x] not in NO_READING
+    assert len(dvl_rows) == len(logger_dvl_rows(sim, 2, (200.0, 230.0)))
     grid = expected_logger_grid(sim, 2, (200.0, 230.0))
-    assert len(dvl_rows) == len(grid)
+    assert grid == logger_dvl_rows(sim, 2, (200.0, 230.0))
     m = gesmi.read_mission(reimported.out)
     assert len(m) == len(dvl_rows)
     # The grid: the DVL rows' times after the whole second of the first row, read here.
@@ -281,12 +407,22 @@ def test_logger_export_reimports_with_its_own_command_and_holds_the_truth(sim, l
     assert "%d samples" % len(grid) in summary
     assert "%d GPS fixes" % len(sim.gps_time) in summary
     assert "%d marks" % len(sim.mark_time) in summary
-    assert re.search(r"grid: the %d rows with a DVL reading, of %d\b" % (len(grid), len(sim.time)), r.stdout), r.stdout
+    assert re.search(r"grid: the %d rows with a DVL reading, of %d;" % (len(grid), len(sim.time)), r.stdout), r.stdout
     longest = max(b - a for a, b in zip(expected_time, expected_time[1:]))
     assert 30.0 < longest < 31.0
     assert "longest step %s s" % seconds_text(longest) in r.stdout, r.stdout
     depth_on_grid = sum(1 for k in grid if k % 10 == 0)
-    assert "depth at %d" % (len(grid) - depth_on_grid) in r.stdout, r.stdout
+    assert ("log.csv: depth: enclosed by max_depth_rate at %d samples without a reading: %d between its readings\n"
+            % ((len(grid) - depth_on_grid,) * 2)) in r.stdout, r.stdout
+    log = read_logger_readings(os.path.join(logger, "log.csv"), epoch)
+    assert expected_grid(log, list(sim.gps_time))[0] == expected_time
+    check_nav_notes(r.stdout, "log.csv", log, expected_time)
+    # The export's truth is on every row of the log; the import took the grid's rows.
+    with open(os.path.join(logger, "truth.csv")) as f:
+        truth_rows = list(csv.reader(f))
+    assert truth_rows[0] == ["time", "north", "east", "down"] and len(truth_rows) == len(rows) + 1
+    assert len(log.row_time) == len(rows)  # every row has a reading (the attitude)
+    np.testing.assert_array_equal([float(row[0]) for row in truth_rows[1:]], log.row_time)
     assert re.search(r"\b%d GGA fixes taken; skipped: 0 sentences with a bad checksum, 0 GGA without a fix"
                      % len(sim.gps_time), r.stdout), r.stdout
     # GPS and marks carried through the NMEA and ISO 8601 files.
@@ -336,8 +472,8 @@ def test_the_epoch_is_stored_and_passed_on_by_the_csv_export(reimported, tmp_pat
 
 
 @pytest.mark.parametrize("options", [
-    ("--dvl-gap", "0:10"),  # no DVL at the start: t = 0 is still the first row's second
-    ("--dvl-gap", "590:600"),  # nor at the end: the last fix falls outside the grid
+    ("--dvl-gap", "0:10"),  # no DVL at the start: the rows before its first reading are samples, the DVL bridged
+    ("--dvl-gap", "590:600"),  # nor at the end: the rows after its last one, and the last fix, too
     ("--dvl-every", "7", "--depth-every", "13"),  # the last row keeps its DVL reading
 ], ids=["gap_at_start", "gap_at_end", "every_7th"])
 def test_logger_export_options_reimport(sim, tmp_path, options):
@@ -346,15 +482,49 @@ def test_logger_export_options_reimport(sim, tmp_path, options):
         command = shlex.split(f.read())
     r = subprocess.run([gesmi_path(), *command[1:]], capture_output=True, text=True, cwd=folder)
     assert r.returncode == 0, r.stderr
+    assert r.stderr == ""  # no fix left unused
     every = int(options[1]) if options[0] == "--dvl-every" else 2
     gap = tuple(float(x) for x in options[1].split(":")) if options[0] == "--dvl-gap" else None
-    grid = expected_logger_grid(sim, every, gap)
-    t0, t1 = sim.time[grid[0]], sim.time[grid[-1]]
-    inside = sum(1 for t in sim.gps_time if t0 - 1e-6 <= t <= t1 + 1e-6)
-    assert nmea_counts(r.stdout) == (inside, 0, 0, len(sim.gps_time) - inside)
+    depth_every = int(options[3]) if "--depth-every" in options else 10
+    grid = expected_logger_grid(sim, every, gap, depth_every)
+    # The log as written, read here: the grid, the fixes it can use, the notes.
+    log = read_logger_readings(os.path.join(folder, "log.csv"), unix(DEFAULT_EPOCH))
+    times, used = expected_grid(log, list(sim.gps_time))
+    np.testing.assert_allclose(times, sim.time[grid], rtol=0, atol=1e-6)
+    first, last = usable_span(log)
+    usable = sum(1 for t in sim.gps_time if first <= t <= last)
+    assert usable == len(used) == len(sim.gps_time)  # the fixes at 0 and 600 s, even where the DVL is silent
+    assert nmea_counts(r.stdout) == (usable, 0, 0, len(sim.gps_time) - usable)
+    check_nav_notes(r.stdout, "log.csv", log, times)
     assert summary_line(r.stdout).endswith("t = 0 at " + iso_z(DEFAULT_EPOCH))
-    m, _ = check_solution(os.path.join(folder, command[command.index("-o") + 1]), sim, grid)
-    np.testing.assert_allclose(m.time, sim.time[grid], rtol=0, atol=1e-6)
+    out = os.path.join(folder, command[command.index("-o") + 1])
+    m, _ = check_solution(out, sim, grid)
+    np.testing.assert_array_equal(m.time, times)
+    np.testing.assert_allclose(m.gps_time, sim.gps_time, rtol=0, atol=1e-3)
+    # Where the DVL has no reading it is bridged: 0 +- surface_max_speed on each component,
+    # and every DVL row then carries its own bound (dvl_relative |v| + dvl_absolute).
+    dvl_times = set(log.readings["vx"])
+    bridged = np.array([t not in dvl_times for t in times])
+    assert bridged.any() == (gap is not None)
+    fill = expected_fill(log, times)[0]  # the DVL's
+    assert fill.channel == "vx" and fill.between == 0 and fill.before + fill.after == int(bridged.sum())
+    with h5py.File(out, "r") as f:
+        velocity = f["/nav/velocity"][()]
+        model = f["/model"].attrs
+        for axis, name in enumerate(("vx", "vy", "vz")):
+            path = "/nav/half_widths/" + name
+            if not bridged.any():
+                assert path not in f
+                continue
+            hw = f[path][()]
+            assert np.all(velocity[bridged, axis] == 0.0) and np.all(hw[bridged] == model["surface_max_speed"])
+            own = model["dvl_relative"] * np.abs(velocity[~bridged, axis]) + model["dvl_absolute"]
+            assert np.all(hw[~bridged] >= own) and np.all(hw[~bridged] <= own * (1 + 1e-12))
+            attrs = f[path].attrs
+            assert (attrs["filled_by"].decode() if isinstance(attrs["filled_by"], bytes) else attrs["filled_by"]) \
+                == "surface_max_speed"
+            assert (int(attrs["samples_before_first_reading"]), int(attrs["samples_between_readings"]),
+                    int(attrs["samples_after_last_reading"])) == (fill.before, 0, fill.after)
 
 
 # ----------------------------------------------------------------------------------------
@@ -464,9 +634,40 @@ class LogLayout:
             out[name] = text(k) if callable(text) else text
         return out
 
+    def log_readings(self):
+        """The log as the import reads it (log_readings()), computed from the layout."""
+        has = {"roll": self.attitude, "pitch": self.attitude, "heading": self.attitude, "vx": self.dvl,
+               "vy": self.dvl, "vz": self.dvl, "altitude": self.altitude, "depth": self.depth}
+        return log_readings(len(self.rows), [self.read_time(k) for k in self.rows],
+                            lambda i, c: bool(has[c](self.rows[i])))
+
+    def fix_times(self):
+        """The simulated fixes the import can use, within the usable span of the log. The
+        fixes are written in the simulation's seconds: t = 0 must be its first second."""
+        assert self.rows[0] < 10
+        first, last = usable_span(self.log_readings())
+        return [float(t) for t in self.sim.gps_time if first <= t <= last]
+
+    def samples(self):
+        """The mission's samples: (time as the import reads it, simulated sample)."""
+        if not hasattr(self, "_samples"):
+            times, used = expected_grid(self.log_readings(), self.fix_times())
+            sample = {self.read_time(k): k for k in self.rows}
+            for t in used:
+                k = int(round(t * 10))
+                assert abs(self.sim.time[k] - t) < 1e-9  # a fix at a simulated sample's time
+                sample.setdefault(t, k)
+            self._samples = [(t, sample[t]) for t in times]
+        return self._samples
+
     @property
     def grid(self):
-        return [k for k in self.rows if self.dvl(k)]
+        """The simulated samples at the mission's samples."""
+        return [k for _, k in self.samples()]
+
+    @property
+    def grid_times(self):
+        return [t for t, _ in self.samples()]
 
     # Files -------------------------------------------------------------------------
     def header(self):
@@ -506,20 +707,27 @@ class LogLayout:
             f.write(self.map_text(**kwargs))
 
     def write_truth(self, path):
+        """The truth on every row of the log and at the samples between none (a fix's
+        time outside the rows), as a logger export writes it: the import takes the
+        samples' rows."""
+        rows = {self.read_time(k): k for k in self.rows}
+        rows.update(self.samples())
         with open(path, "w") as f:
             f.write("time,north,east,down\n")
-            for k in self.grid:
-                f.write("%r,%r,%r,%r\n" % (self.read_time(k), *(float(x) for x in self.sim.position[k])))
+            for t in sorted(rows):
+                f.write("%r,%r,%r,%r\n" % (t, *(float(x) for x in self.sim.position[rows[t]])))
 
     def write_aux(self, folder):
-        """gps.csv, marks.csv (seconds after t = 0), truth_mines.csv and model.yaml."""
+        """gps.csv (the fixes the import can use), marks.csv (seconds after t = 0, within
+        the mission), truth_mines.csv and model.yaml."""
         s = self.sim
-        t0, t1 = self.read_time(self.grid[0]), self.read_time(self.grid[-1])
+        t0, t1 = self.grid_times[0], self.grid_times[-1]
         paths = {name: os.path.join(folder, name) for name in ("gps.csv", "marks.csv", "truth_mines.csv", "model.yaml")}
+        used = set(self.fix_times())
         with open(paths["gps.csv"], "w") as f:
             f.write("time,longitude,latitude\n")
             for t, (lon, lat) in zip(s.gps_time, s.gps_lonlat):
-                if t0 <= t <= t1:
+                if float(t) in used:
                     f.write("%r,%r,%r\n" % (float(t), float(lon), float(lat)))
         with open(paths["marks.csv"], "w") as f:
             f.write("time,mine,range,side\n")
@@ -560,7 +768,8 @@ LAYOUTS = {
         extra={"vehicle": "AUV-3 survey", "mode": lambda k: "TRACK" if k % 50 else "FIX", "seq": lambda k: str(k)},
         dvl=lambda k: k % 2 == 0, depth=lambda k: k % 5 == 0),
     # (b) tab-separated, ISO 8601 local times with a +02:00 offset.
-    # The first row 0.7 s after a whole second: t = 0 is that second.
+    # The first row 0.7 s after a whole second: t = 0 is that second, the time of the
+    # first fix, and the first DVL reading 0.8 s after it: the mission starts at the fix.
     "tab_iso_plus_two_hours": dict(
         delimiter="\t", map_delimiter="tab", time_format="iso", offset="+02:00", angle_unit="deg",
         names={"time": "Local time"}, extra={"note": "-"}, dvl=lambda k: k % 2 == 0, rows=range(7, 6001)),
@@ -601,29 +810,30 @@ def test_own_log_layouts_import_and_hold_the_truth(any_sim, tmp_path, name):
     grid = layout.grid
     m = gesmi.read_mission(out)
     assert len(m) == len(grid)
-    np.testing.assert_array_equal(m.time, np.array([layout.read_time(k) for k in grid]))
+    np.testing.assert_array_equal(m.time, np.array(layout.grid_times))
     summary = summary_line(r.stdout)
     if layout.time_format == "seconds":
         assert "t = 0 at" not in summary
     else:
         assert summary.endswith("t = 0 at " + iso_z(layout.epoch)), summary
-    assert re.search(r"grid: the %d rows with a DVL reading, of %d\b" % (len(grid), len(layout.rows)), r.stdout), r.stdout
-    # Channels enclosed between readings: the grid samples without their own reading.
-    own = {
-        "roll": sum(1 for k in grid if layout.attitude(k)),
-        "depth": sum(1 for k in grid if layout.depth(k)),
-    }
-    for channel in ("roll", "pitch", "heading"):
-        missing = len(grid) - own["roll"]
-        if missing:
-            assert "%s at %d" % (channel, missing) in r.stdout, r.stdout
-        else:
-            assert re.search(r"\b%s at \d" % channel, r.stdout) is None, r.stdout
-    missing_depth = len(grid) - own["depth"]
-    if missing_depth:
-        assert "depth at %d" % missing_depth in r.stdout, r.stdout
+    dvl = [k for k in layout.rows if layout.dvl(k)]
+    assert re.search(r"grid: the %d rows with a DVL reading, of %d[;,]" % (len(dvl), len(layout.rows)), r.stdout), r.stdout
+    # The grid, and one line per channel with grid samples without their own reading:
+    # before its first reading, between its readings, after its last.
+    log = layout.log_readings()
+    check_nav_notes(r.stdout, str(tmp_path / "log.txt"), log, layout.grid_times)
+    if name == "tab_iso_plus_two_hours":
+        # The log starts 0.7 s after the whole second of t = 0, with the fix at 0 s: the
+        # mission starts at that fix, row 7 (no DVL) is a sample, the DVL bridged on both.
+        assert layout.grid_times[:3] == [0.0, 0.7, 0.8] and grid[:3] == [0, 7, 8]
+        assert "longest step 0.7 s (from 0 s to 0.7 s, a fix's time)" in r.stdout, r.stdout
+        assert "vx, vy, vz: bridged by surface_max_speed at 2 samples without a reading: 2 before its first " \
+               "reading (0.8 s)" in r.stdout, r.stdout
+        assert "roll: enclosed by max_attitude_rate at 1 samples without a reading: 1 before its first " \
+               "reading (0.7 s)" in r.stdout, r.stdout
+        np.testing.assert_allclose(m.gps_time, sim.gps_time, rtol=0, atol=1e-9)
     else:
-        assert "depth at" not in r.stdout
+        assert grid == dvl  # the first and last rows have a DVL reading, the fixes are on rows
     if name == "dvl_gap_30s":
         times = [layout.read_time(k) for k in grid]
         steps = np.diff(times)
@@ -635,7 +845,8 @@ def test_own_log_layouts_import_and_hold_the_truth(any_sim, tmp_path, name):
 
 def test_knots_and_degrees_are_converted_to_si(sim, logger, tmp_path):
     """The imported readings are the simulated ones, within the conversion's rounding; a
-    log in seconds placed by --epoch takes the NMEA fixes of its span."""
+    log in seconds placed by --epoch takes the NMEA fixes within max_gap of its readings
+    and names the others in a warning."""
     layout = LogLayout(sim, rows=range(0, 1201), angle_unit="deg", speed_unit="knots", dvl=lambda k: k % 2 == 0)
     log, map_, truth = (str(tmp_path / n) for n in ("log.csv", "map.yaml", "truth.csv"))
     layout.write_log(log)
@@ -645,10 +856,20 @@ def test_knots_and_degrees_are_converted_to_si(sim, logger, tmp_path):
     r = run_gesmi("import", "nav", log, "--map", map_, "--epoch", iso_z(DEFAULT_EPOCH),
                   "--gps", os.path.join(logger, "gps.nmea"), "--truth", truth, "-o", out)
     assert r.returncode == 0, r.stderr
-    inside = [t for t in sim.gps_time if t <= 120.0]
+    # The fixes within max_gap (60 s) of the attitude's and the depth's readings are used,
+    # the others named in a warning (their GGA: line 2 i + 2 of the exported gps.nmea).
+    first, last = usable_span(layout.log_readings())
+    assert (first, last) == pytest.approx((-60.0, 180.0), abs=1e-9)
+    inside = [t for t in sim.gps_time if first <= t <= last]
     assert nmea_counts(r.stdout) == (len(inside), 0, 0, len(sim.gps_time) - len(inside))
+    warnings = ["%s:%d: warning: the fix at %s s is not used: no attitude or depth reading within max_gap (60 s) of it"
+                % (os.path.join(logger, "gps.nmea"), 2 * i + 2, seconds_text(t))
+                for i, t in enumerate(sim.gps_time) if not first <= t <= last]
+    assert len(warnings) == len(sim.gps_time) - len(inside) >= 1
+    assert [line.split(",")[0] for line in r.stderr.splitlines()] == warnings, r.stderr
     m = gesmi.read_mission(out)
     grid = layout.grid
+    assert grid == [k for k in layout.rows if k % 2 == 0]  # the fix kept is on the first row
     np.testing.assert_allclose(m.roll, sim.attitude[grid, 0], rtol=1e-14, atol=1e-18)
     np.testing.assert_allclose(m.heading, sim.attitude[grid, 2], rtol=1e-14, atol=1e-18)
     np.testing.assert_allclose(m.vx, sim.velocity[grid, 0], rtol=1e-14, atol=1e-18)
@@ -704,7 +925,7 @@ def nmea_import(logger, tmp_path, lines, *extra):
 
 def nmea_counts(stdout):
     match = re.search(r"(\d+) GGA fixes taken; skipped: (\d+) sentences with a bad checksum, (\d+) GGA without a fix, "
-                      r"(\d+) fixes outside the navigation's time span", stdout)
+                      r"(\d+) fixes not usable \(below\)", stdout)
     assert match, stdout
     return tuple(int(x) for x in match.groups())
 
@@ -783,24 +1004,86 @@ def test_nmea_midnight_crossing_takes_the_next_day(sim, midnight_logger, tmp_pat
     np.testing.assert_allclose(m.gps_time, [240.5, 330.25], rtol=0, atol=1e-9)
 
 
-def test_nmea_fixes_outside_the_navigation_are_skipped_and_counted(sim, logger, tmp_path):
+def test_nmea_fixes_outside_the_navigation_are_skipped_and_counted(sim, logger, reimported, tmp_path):
+    """With the logger's map, a fix is used when every attitude and depth channel has a
+    reading within max_gap (60 s) of it: the mission reaches the fixes before and after
+    the log, and a fix farther out is skipped, counted and named in a warning. With the
+    exact-header navigation CSV, the fixes outside its time span are skipped."""
     positions = fix_positions(sim, 5)
     seconds = (-60.0, -0.5, 42.0, 600.5, 3600.0)  # the log spans 0 .. 600 s
     lines = []
     for s, (lat, lon) in zip(seconds, positions):
         t = DEFAULT_EPOCH + datetime.timedelta(seconds=s)
         lines += [rmc(t, lat, lon), gga(t, lat, lon)]
+    gga_of = {s: lines[2 * i + 1] for i, s in enumerate(seconds)}
     lines.insert(0, sentence("GPGSA,A,3,04,05,,09,12,,,24,,,,,2.5,1.3,2.1"))
     # The fix at 42 s again from a second receiver (GN talker): a repeat, not a second fix.
     lines.insert(7, "$GN" + lines[6][3:lines[6].rindex("*")] + "*" + nmea_checksum("GN" + lines[6][3:lines[6].rindex("*")]))
     assert pynmea2.parse(lines[7], check=True).talker == "GN"
-    r, out, _ = nmea_import(logger, tmp_path, lines, "--origin", "%r,%r" % sim.origin)
+    line_of = {s: lines.index(gga_of[s]) + 1 for s in seconds}  # each fix's GGA in the file
+    r, out, nmea = nmea_import(logger, tmp_path, lines, "--origin", "%r,%r" % sim.origin)
     assert r.returncode == 0, r.stderr
-    assert nmea_counts(r.stdout) == (1, 0, 0, 4)
-    assert "4 fixes outside the navigation's time span, 1 repeated; 1 other sentences ignored" in r.stdout, r.stdout
+    log_csv, map_ = os.path.join(logger, "log.csv"), os.path.join(logger, "map.yaml")
+    log = read_logger_readings(log_csv, unix(DEFAULT_EPOCH))
+    first, last = usable_span(log)
+    assert (first, last) == (-60.0, 660.0)  # attitude and depth read from 0 to 600 s
+    used = [s for s in seconds if first <= s <= last]
+    unused = [s for s in seconds if s not in used]
+    assert used == [-60.0, -0.5, 42.0, 600.5] and unused == [3600.0]
+    assert nmea_counts(r.stdout) == (len(used), 0, 0, len(unused))
+    assert "%d fixes not usable (below), 1 repeated; 1 other sentences ignored" % len(unused) in r.stdout, r.stdout
+    warnings = r.stderr.splitlines()
+    assert len(warnings) == len(unused), r.stderr
+    for warning, s in zip(warnings, unused):
+        assert warning.startswith("%s:%d: warning: the fix at %s s is not used: no attitude or depth reading within "
+                                  "max_gap (60 s) of it," % (nmea, line_of[s], seconds_text(s))), r.stderr
+        assert "max_gap in %s" % map_ in warning, warning
     m = gesmi.read_mission(out)
-    np.testing.assert_allclose(m.gps_time, [42.0], rtol=0, atol=1e-9)
-    assert m.gps_latitude[0] == pytest.approx(positions[2][0], abs=1e-8)
+    np.testing.assert_allclose(m.gps_time, used, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(m.gps_latitude, [positions[seconds.index(s)][0] for s in used], rtol=0, atol=1e-8)
+    # The grid: the DVL rows and the times of the fixes before and after every row (the
+    # log's first and last rows have a DVL reading).
+    times, _ = expected_grid(log, used)
+    assert times[:2] == [-60.0, -0.5] and times[-1] == 600.5 and len(times) == len(log.readings["vx"]) + 3
+    np.testing.assert_array_equal(m.time, times)
+    check_nav_notes(r.stdout, log_csv, log, times)
+    assert "longest step 59.5 s (from -60 s to -0.5 s, a fix's time)" in r.stdout, r.stdout
+    assert "%d samples over %g s, %d GPS fixes" % (len(times), times[-1] - times[0], len(used)) in summary_line(r.stdout)
+    # --json: the unused fixes, and what the import filled, channel by channel.
+    r = run_gesmi("import", "nav", log_csv, "--map", map_, "--gps", nmea, "--origin", "%r,%r" % sim.origin,
+                  "-o", str(tmp_path / "json.h5"), "--json")
+    assert r.returncode == 0, r.stderr
+    report = json.loads(r.stdout)
+    assert [(u["where"], u["time_s"]) for u in report["unused_fixes"]] == [
+        ("%s:%d" % (nmea, line_of[s]), s) for s in unused]
+    filled = {f["channel"]: f for f in report["mission"]["filled"]}
+    expected = {}
+    for f in expected_fill(log, times):
+        for channel in (("vx", "vy", "vz") if f.channel == "vx" else (f.channel,)):
+            expected[channel] = dict(channel=channel, key=f.key, before_first_reading=f.before,
+                                     between_readings=f.between, after_last_reading=f.after,
+                                     first_reading_s=f.first, last_reading_s=f.last)
+    assert filled == expected
+    assert (filled["vx"]["before_first_reading"], filled["vx"]["after_last_reading"]) == (2, 1)
+    # The exact-header navigation CSV (gesmi's export of the imported logger mission, 0 ..
+    # 600 s): no usable span beyond its rows; the fixes outside them skipped and named.
+    assert reimported.result.returncode == 0, reimported.result.stderr
+    folder = str(tmp_path / "csv")
+    assert run_gesmi("export", reimported.out, "-o", folder).returncode == 0
+    nav = os.path.join(folder, "nav.csv")
+    with open(nav) as f:
+        nav_times = [float(row[0]) for row in list(csv.reader(f))[1:]]
+    inside = [s for s in seconds if nav_times[0] <= s <= nav_times[-1]]
+    assert inside == [42.0]
+    r = run_gesmi("import", "nav", nav, "--gps", nmea, "--epoch", iso_z(DEFAULT_EPOCH), "--origin", "%r,%r" % sim.origin,
+                  "-o", str(tmp_path / "csv.h5"))
+    assert r.returncode == 0, r.stderr
+    assert nmea_counts(r.stdout) == (len(inside), 0, 0, len(seconds) - len(inside))
+    assert [w.split(": warning: ")[0] for w in r.stderr.splitlines()] == [
+        "%s:%d" % (nmea, line_of[s]) for s in seconds if s not in inside], r.stderr
+    m = gesmi.read_mission(str(tmp_path / "csv.h5"))
+    np.testing.assert_array_equal(m.time, nav_times)
+    np.testing.assert_allclose(m.gps_time, inside, rtol=0, atol=1e-9)
 
 
 # ----------------------------------------------------------------------------------------

@@ -21,6 +21,7 @@ DATASETS = ["/time", "/tube/lower", "/tube/upper", "/increments/lower", "/increm
 MODEL_KEYS = ("dvl_relative dvl_absolute roll pitch heading depth_absolute depth_relative altitude gps_lon_deg "
               "gps_lat_deg gps_metres mark_range mine_depth_band sonar_max_range along_track_tolerance "
               "max_attitude_rate max_acceleration max_depth_rate max_altitude_rate max_jerk").split()
+MODEL_KEYS_7 = MODEL_KEYS + "max_speed surface_layer_depth surface_max_jerk surface_max_speed".split()
 
 
 def text(value):
@@ -81,8 +82,13 @@ def root_digest(f, kind):
         fields.append(("epoch_utc", text(a["epoch_utc"])))
     fields += [("origin_latitude", shortest(a["origin_latitude"])), ("origin_longitude", shortest(a["origin_longitude"])),
                ("datum", text(a["datum"]))]
+    version = int(a["format_version"])
+    if version >= 7:
+        fields.append(("surface_steps", str(int(a["surface_steps"]))))
+        for count, times in (("fallback_steps", "fallback_times"), ("speed_exceeded_samples", "speed_exceeded_times")):
+            fields += [(count, str(int(a[count]))), (times, text(a[times]))]
     model = f["/model"].attrs
-    fields += [(f"/model/{key}", shortest(model[key])) for key in MODEL_KEYS]
+    fields += [(f"/model/{key}", shortest(model[key])) for key in (MODEL_KEYS_7 if version >= 7 else MODEL_KEYS)]
     fields += [(f"/model/{key}", text(model[key])) for key in ("sonar_side", "step_model")]
     fields += [(name, text(f[name].attrs[kind])) for name in DATASETS]
     h = digest(kind)
@@ -112,7 +118,7 @@ def test_a_fresh_result_has_the_digests_formats_md_describes(mission_file, tmp_p
     r = run_gesmi("solve", mission_file, "-o", out)
     assert r.returncode == 0, r.stderr
     with h5py.File(out, "r") as f:
-        assert int(f.attrs["format_version"]) == 6
+        assert int(f.attrs["format_version"]) == 7
     check_digests(out, "xxh128")
 
 

@@ -112,7 +112,7 @@ TEST(BadInput, ImportNavNamesFileLineFieldAndReason) {
       {"bad YAML value", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"bounds.yaml", "heading: fast\n"}},
        {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--config", "@/bounds.yaml"}, {"@/bounds.yaml:1: heading: expected a number"}},
       {"truth rows", {{"nav.csv", kNav}, {"gps.csv", kGps}, {"truth.csv", "time,north,east,down\n0,0,0,5\n"}},
-       {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--truth", "@/truth.csv"}, {"@/truth.csv:2: expected 3 rows (one per navigation sample), found 1"}},
+       {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--truth", "@/truth.csv"}, {"@/truth.csv:2: no row at the navigation sample 1 (0.1 s)"}},
       {"mines out of range", {{"nav.csv", kNav}, {"gps.csv", kGps}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "--mines", "65"}, {"--mines: must be between 0 and 64"}},
       {"output folder missing", {{"nav.csv", kNav}, {"gps.csv", kGps}}, {"import", "nav", "@/nav.csv", "--gps", "@/gps.csv", "-o", "@/no/such/folder/out.h5"},
        {"folder @/no/such/folder does not exist"}},

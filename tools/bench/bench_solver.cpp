@@ -77,6 +77,16 @@ void BM_SensorEnclosures(benchmark::State& state) {
 // Process CPU time: the build runs on every core (solver/network/step_chunks.h).
 BENCHMARK(BM_SensorEnclosures)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
+void BM_ClassifySteps(benchmark::State& state) {
+  // The step regimes and the readings' check (step_regimes.h) over the reference mission.
+  const Mission& m = reference().mission;
+  std::size_t fallback = 0;
+  for (auto _ : state) fallback = classify_steps(m, m.model).report().fallback_steps;
+  state.counters["steps"] = static_cast<double>(m.size());
+  state.counters["fallback_steps"] = static_cast<double>(fallback);
+}
+BENCHMARK(BM_ClassifySteps)->Unit(benchmark::kMillisecond);
+
 // The mission as a reader gives it: fixes in latitude/longitude and the local frame's
 // margins that io/ sets (docs/model.md, "The local frame's north" and "scale").
 Mission with_local_frame(Mission m) {

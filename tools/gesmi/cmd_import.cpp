@@ -69,16 +69,20 @@ std::string optional_path(const po::variables_map& v, const char* name) {
 
 // The summary, or with --json the report: every file option given is an input.
 int finish_import(const po::variables_map& v, std::string_view kind, std::initializer_list<const char*> input_options,
-                  const Mission& m, const std::string& output, const std::vector<std::string>& notes = {}) {
+                  const Mission& m, const std::string& output, const io::ImportNotes& notes = {}) {
   CommandReport report("import " + std::string(kind), v);
   if (report.enabled()) {
     report.inputs(v, input_options);
     report.output(output);
     report["mission"] = io::mission_json(m);
-    report["notes"] = notes;
+    report["notes"] = notes.lines;
+    report["unused_fixes"] = nlohmann::json::array();
+    for (const io::UnusedFix& f : notes.unused_fixes)
+      report["unused_fixes"].push_back({{"where", f.where}, {"time_s", f.time}, {"reason", f.reason}});
     return report.finish(kExitOk);
   }
-  for (const std::string& note : notes) std::printf("%s\n", note.c_str());
+  for (const std::string& note : notes.lines) std::printf("%s\n", note.c_str());
+  for (const io::UnusedFix& f : notes.unused_fixes) std::fprintf(stderr, "%s\n", io::unused_fix_line(f).c_str());
   const std::string epoch = m.epoch ? ", t = 0 at " + io::format_iso8601(*m.epoch) : std::string();
   std::printf("wrote %s: %zu samples over %g s, %zu GPS fixes, %zu marks, %d mines%s\n", output.c_str(), m.size(),
               m.time.back() - m.time.front(), m.gps_time.size(), m.mark_count(), m.mine_count, epoch.c_str());
@@ -164,7 +168,7 @@ int import_nav(std::span<const std::string> args) {
   if (v.count("origin")) inputs.origin = parse_origin(v["origin"].as<std::string>());
   inputs.mines = parse_mines(v);
   if (skipped_as_existing(v, "import nav", {output})) return kExitOk;
-  std::vector<std::string> notes;
+  io::ImportNotes notes;
   Progress progress("gesmi import:");
   progress.update(-1.0, "reading " + v["nav"].as<std::string>() + " and its fixes and marks");
   const Mission m = io::import_nav(v["nav"].as<std::string>(), inputs, &notes);

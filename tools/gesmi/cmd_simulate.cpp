@@ -22,8 +22,9 @@ namespace {
 namespace po = boost::program_options;
 
 constexpr const char* kUsage =
-    "gesmi simulate --preset redermor --seed S -o MISSION.h5 [--errors uniform|worst-case|at-samples|drifting] [--duration T] "
-    "[--rate HZ] [--mines K] [--missed P] [--unassociated P] [--outliers N] [--config bounds.yaml] [--skip-existing]";
+    "gesmi simulate --preset redermor --seed S -o MISSION.h5 [--errors uniform|worst-case|at-samples|drifting|corners] "
+    "[--duration T] [--rate HZ] [--mines K] [--missed P] [--unassociated P] [--outliers N] [--surface S [--wave-height H] "
+    "[--wave-period T] [--surface-dvl]] [--bursts N [--burst-jerk J]] [--config bounds.yaml] [--skip-existing]";
 
 int run_simulate(std::span<const std::string> args) {
   po::options_description options("simulate options");
@@ -34,13 +35,21 @@ int run_simulate(std::span<const std::string> args) {
       ("errors", po::value<std::string>()->default_value("uniform"),
        "uniform, worst-case (a bias at 99 % of each bound), at-samples (at the ends of the bounds, against the motion: "
        "boxes hold at the sample instants only), or drifting (each sensor's error 0.99 x bound x sin(2 pi t / T + phase), T drawn "
-       "in [600, 2400] s and the phase from the seed: inside the bounds, but not a constant bias)")
+       "in [600, 2400] s and the phase from the seed: inside the bounds, but not a constant bias), or corners (at 99.9 % "
+       "of each bound, on the side of the truth's curvature: the truth on its box's corner where the step model is weakest)")
       ("duration", po::value<std::string>()->default_value("5999.4"), "mission length (s)")
       ("rate", po::value<std::string>()->default_value("10"), "sampling rate (Hz)")
       ("mines", po::value<std::string>()->default_value("6"), "number of mines (0..64)")
       ("missed", po::value<std::string>()->default_value("0"), "probability that a detection is missed")
       ("unassociated", po::value<std::string>()->default_value("0"), "probability that a mark has no mine number")
       ("outliers", po::value<std::string>()->default_value("0"), "number of corrupted marks")
+      ("surface", po::value<std::string>()->default_value("0"),
+       "seconds at the surface before the dive and after surfacing, with GPS fixes at 1 Hz (0: submerged throughout)")
+      ("wave-height", po::value<std::string>()->default_value("0"), "height of the waves at the surface (m): heave and sway")
+      ("wave-period", po::value<std::string>()->default_value("6"), "period of the waves (s)")
+      ("surface-dvl", "the DVL keeps bottom lock at the surface (else it has no reading there)")
+      ("bursts", po::value<std::string>()->default_value("0"), "number of 1 s vertical jerk bursts while submerged")
+      ("burst-jerk", po::value<std::string>()->default_value("10"), "the bursts' peak jerk (m/s³)")
       ("config", po::value<std::string>(), "sensor bounds (YAML) the errors are drawn from, stored with the mission");
   add_json_option(options);
   add_skip_existing(options);
@@ -54,13 +63,19 @@ int run_simulate(std::span<const std::string> args) {
   o.seed = static_cast<std::uint64_t>(seed);
   const std::string errors = v["errors"].as<std::string>();
   if (!parse_simulated_errors(errors, o.errors))
-    throw UsageError("--errors: expected uniform, worst-case, at-samples or drifting, got " + io::quoted_input(errors));
+    throw UsageError("--errors: expected uniform, worst-case, at-samples, drifting or corners, got " + io::quoted_input(errors));
   o.duration = parse_double("--duration", v["duration"].as<std::string>());
   o.rate = parse_double("--rate", v["rate"].as<std::string>());
   o.mines = static_cast<int>(parse_integer("--mines", v["mines"].as<std::string>()));
   o.missed = parse_double("--missed", v["missed"].as<std::string>());
   o.unassociated = parse_double("--unassociated", v["unassociated"].as<std::string>());
   o.outliers = static_cast<int>(parse_integer("--outliers", v["outliers"].as<std::string>()));
+  o.surface = parse_double("--surface", v["surface"].as<std::string>());
+  o.wave_height = parse_double("--wave-height", v["wave-height"].as<std::string>());
+  o.wave_period = parse_double("--wave-period", v["wave-period"].as<std::string>());
+  o.surface_dvl = v.count("surface-dvl") > 0;
+  o.bursts = static_cast<int>(parse_integer("--bursts", v["bursts"].as<std::string>()));
+  o.burst_jerk = parse_double("--burst-jerk", v["burst-jerk"].as<std::string>());
   // Each reason starts with the option it is about ("missed must be ...").
   if (const std::string why = o.validate(); !why.empty()) throw UsageError("--" + why);
   const std::string output = v["output"].as<std::string>();

@@ -2,13 +2,39 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <numeric>
 
+#include "io/imports/csv_number.h"
 #include "solver/network/inconsistency_text.h"
 
 namespace gesmi::cli {
+
+namespace {
+
+std::string times_text(const std::vector<double>& times, std::size_t count) {
+  std::string text;
+  for (const double t : times) text += (text.empty() ? "" : ", ") + io::format_number(std::round(t * 10.0) / 10.0) + " s";
+  return count > times.size() ? text + ", ..." : text;
+}
+
+}  // namespace
+
+void print_regime_notes(const StepRegimeReport& r) {
+  if (r.fallback_steps > 0)
+    std::fprintf(stderr,
+                 "gesmi solve: warning: at %zu steps the readings change faster than max_jerk (or the rate bounds) allow, "
+                 "from t = %s: those steps are bounded by the speed alone (max_speed, surface_max_speed); if the robot "
+                 "really moved so, raise the bound in --config, else check those readings\n",
+                 r.fallback_steps, times_text(r.fallback_times, r.fallback_steps).c_str());
+  if (r.speed_exceeded > 0)
+    std::fprintf(stderr,
+                 "gesmi solve: warning: at %zu samples the readings exceed the speed bound (max_speed, or surface_max_speed "
+                 "near the surface), at t = %s: the bounds resting on it do not hold there; raise it in --config\n",
+                 r.speed_exceeded, times_text(r.speed_exceeded_times, r.speed_exceeded).c_str());
+}
 
 void print_solve_notes(const MissionSolution& s) {
   const SolveReport& r = s.report;
@@ -23,6 +49,7 @@ void print_solve_notes(const MissionSolution& s) {
                  "bounds there assume the robot stayed within it: import the log again with an origin nearer the mission "
                  "(--origin LAT,LON)\n",
                  r.beyond_frame_zone);
+  print_regime_notes(r.regimes);
   if (!r.consistent || r.minimal_outliers == 0 || r.hypotheses.empty()) return;
   std::fprintf(stderr, "gesmi solve: consistent with %d outlier(s); %zu hypothesis(es) restore consistency:\n",
                r.minimal_outliers, r.hypotheses.size());

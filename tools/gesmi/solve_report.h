@@ -10,8 +10,11 @@
 
 namespace gesmi::cli {
 
-/// Notes for the operator on stderr: a warm rerun solved cold, the hypotheses at q*.
+/// Notes for the operator on stderr: a warm rerun solved cold, steps whose readings
+/// contradict the model's bounds, the hypotheses at q*.
 void print_solve_notes(const MissionSolution& solution);
+/// The warnings of the readings' check (step_regimes.h), on stderr; nothing when it found none.
+void print_regime_notes(const StepRegimeReport& report);
 /// The candidates of unnumbered marks and the summary line naming the files written (stdout).
 void print_solve_summary(const Mission& mission, const MissionSolution& solution, const std::vector<std::string>& written);
 

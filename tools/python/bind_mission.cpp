@@ -129,17 +129,24 @@ void bind_mission(py::module_& m) {
   m.def(
       "simulate",
       [](std::uint64_t seed, const std::string& errors, double duration, double rate, int mines, double missed,
-         double unassociated, int outliers) {
+         double unassociated, int outliers, double surface, double wave_height, double wave_period, bool surface_dvl,
+         int bursts, double burst_jerk) {
         SimulationOptions o;
         o.seed = seed;
         if (!parse_simulated_errors(errors, o.errors))
-          throw io::FormatError("simulate: errors: expected uniform, worst-case, at-samples or drifting");
+          throw io::FormatError("simulate: errors: expected uniform, worst-case, at-samples, drifting or corners");
         o.duration = duration;
         o.rate = rate;
         o.mines = mines;
         o.missed = missed;
         o.unassociated = unassociated;
         o.outliers = outliers;
+        o.surface = surface;
+        o.wave_height = wave_height;
+        o.wave_period = wave_period;
+        o.surface_dvl = surface_dvl;
+        o.bursts = bursts;
+        o.burst_jerk = burst_jerk;
         if (const std::string why = o.validate(); !why.empty()) throw io::FormatError("simulate: " + why);
         Mission s = simulate_mission(o);
         s.origin = {48.212920614, -4.458227931};  // the reference start fix, as `gesmi simulate`
@@ -149,6 +156,8 @@ void bind_mission(py::module_& m) {
       },
       py::arg("seed") = 1, py::arg("errors") = "uniform", py::arg("duration") = 5999.4, py::arg("rate") = 10.0,
       py::arg("mines") = 6, py::arg("missed") = 0.0, py::arg("unassociated") = 0.0, py::arg("outliers") = 0,
+      py::arg("surface") = 0.0, py::arg("wave_height") = 0.0, py::arg("wave_period") = 6.0, py::arg("surface_dvl") = false,
+      py::arg("bursts") = 0, py::arg("burst_jerk") = 10.0,
       "Simulates a reference-like mission with ground truth (as `gesmi simulate`)");
 }
 

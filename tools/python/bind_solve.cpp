@@ -44,6 +44,13 @@ py::dict report_dict(const SolveReport& r) {
   d["removal_sets"] = r.removal_sets;
   d["work_items"] = r.work_items;
   d["beyond_frame_zone"] = r.beyond_frame_zone;
+  py::dict regimes;
+  regimes["surface_steps"] = r.regimes.surface_steps;
+  regimes["fallback_steps"] = r.regimes.fallback_steps;
+  regimes["fallback_times"] = r.regimes.fallback_times;
+  regimes["speed_exceeded"] = r.regimes.speed_exceeded;
+  regimes["speed_exceeded_times"] = r.regimes.speed_exceeded_times;
+  d["regimes"] = regimes;
   d["cold_fallback"] = r.cold_fallback ? py::object(py::str(*r.cold_fallback)) : py::object(py::none());
   if (r.explained_by) {
     py::list refs;

@@ -199,12 +199,19 @@ TEST(TruthCsv, FollowsTheNavigationSamples) {
   const std::vector<double> time = {0.0, 0.1, 0.2};
   std::istringstream good("time,north,east,down\n0,1,2,3\n0.1,1,2,3\n0.2,1,2,3.5\n");
   EXPECT_EQ(read_truth_csv(good, "truth.csv", time).down[2], 3.5);
+  // Rows between the samples (a truth on every row of a log whose grid takes some) are skipped.
+  std::istringstream between("time,north,east,down\n0,1,2,3\n0.05,9,9,9\n0.1,1,2,3\n0.15,9,9,9\n0.2,1,2,3.5\n");
+  const TruthTrack track = read_truth_csv(between, "truth.csv", time);
+  EXPECT_EQ(track.down, (std::vector<double>{3.0, 3.0, 3.5}));
   std::istringstream shifted("time,north,east,down\n0,1,2,3\n0.15,1,2,3\n0.2,1,2,3\n");
-  EXPECT_NE(error_of([&] { read_truth_csv(shifted, "truth.csv", time); })
-                .find("truth.csv:3: time: 0.15 s differs from the navigation sample 1 at 0.1 s"),
-            std::string::npos);
+  const std::string gap = error_of([&] { read_truth_csv(shifted, "truth.csv", time); });
+  EXPECT_NE(gap.find("truth.csv:3: time: no row at the navigation sample 1 (0.1 s)"), std::string::npos) << gap;
   std::istringstream short_track("time,north,east,down\n0,1,2,3\n");
-  EXPECT_NE(error_of([&] { read_truth_csv(short_track, "truth.csv", time); }).find("expected 3 rows"), std::string::npos);
+  const std::string short_error = error_of([&] { read_truth_csv(short_track, "truth.csv", time); });
+  EXPECT_NE(short_error.find("truth.csv:2: no row at the navigation sample 1 (0.1 s)"), std::string::npos) << short_error;
+  std::istringstream backwards("time,north,east,down\n0,1,2,3\n0,1,2,3\n");
+  EXPECT_NE(error_of([&] { read_truth_csv(backwards, "truth.csv", time); }).find("truth.csv:3: time: 0 s does not follow 0 s"),
+            std::string::npos);
   std::istringstream mines("mine,north,east,down\n0,1,2,3\n2,1,2,3\n");
   EXPECT_NE(error_of([&] { read_truth_mines_csv(mines, "truth_mines.csv"); })
                 .find("truth_mines.csv:3: mine: expected mine 1"),

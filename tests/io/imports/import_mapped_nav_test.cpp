@@ -33,9 +33,22 @@ const char* kMap =
     "altitude: {column: alt}\n"
     "depth:    {column: z}\n";
 
-MappedNavLog read(const std::string& csv, const std::string& map_text = kMap, const SensorModel& model = {}) {
+// The readings, then the grid without GPS fixes (nav_grid.h), as `gesmi import nav` makes them.
+struct Read {
+  NavLog log;
+  SensorModel model;
+  std::optional<std::int64_t> epoch;
+  std::vector<std::string> notes;  // the grid's, then what was filled
+};
+
+Read read(const std::string& csv, const std::string& map_text = kMap, const SensorModel& model = {}) {
   std::istringstream in(csv);
-  return read_mapped_nav(in, "log.csv", read_column_map(write_map(map_text), nav_map_schema(), true), model, std::nullopt);
+  MappedNavLog m =
+      read_mapped_nav(in, "log.csv", read_column_map(write_map(map_text), nav_map_schema(), true), model, std::nullopt);
+  NavOnGrid on_grid = nav_on_grid(m.series, {}, m.model, m.max_gap, m.limit);
+  Read r{std::move(on_grid.log), m.model, m.epoch, {on_grid.grid_note}};
+  for (const std::string& line : fill_lines(r.log.half_widths)) r.notes.push_back(line);
+  return r;
 }
 
 std::string error_of(const std::string& csv, const std::string& map_text = kMap, const SensorModel& model = {}) {
@@ -49,7 +62,7 @@ std::string error_of(const std::string& csv, const std::string& map_text = kMap,
 
 TEST(MappedNav, AnyOrderExtraColumnsUnitsAndTheDvlGrid) {
   // Semicolons, detected; attitude every row, DVL every other row, depth on two rows.
-  const MappedNavLog log = read(
+  const Read log = read(
       "status;z;h;t;u;v;w;alt;p;r;temp\n"
       "ok;10;90;0.0;2;0;0;5;1;-1;12\n"
       "ok;;91;0.1;;;;;1;-1;12\n"
@@ -76,7 +89,9 @@ TEST(MappedNav, AnyOrderExtraColumnsUnitsAndTheDvlGrid) {
   EXPECT_GT(log.model.dvl_absolute, model.dvl_absolute);
   EXPECT_EQ(log.model.altitude, model.altitude);
   ASSERT_EQ(log.notes.size(), 2u);
-  EXPECT_NE(log.notes[1].find("depth at 1"), std::string::npos);
+  EXPECT_NE(log.notes[1].find("depth: enclosed by max_depth_rate at 1 samples without a reading: 1 between its readings"),
+            std::string::npos)
+      << log.notes[1];
 }
 
 TEST(MappedNav, AnyConvertedDvlComponentWidensTheDvlBound) {
@@ -84,7 +99,7 @@ TEST(MappedNav, AnyConvertedDvlComponentWidensTheDvlBound) {
   map.replace(map.find("{column: u, unit: knots}"), 24, "{column: u}");
   map.replace(map.find("{column: w}"), 11, "{column: w, unit: knots}");
   const std::string csv = "t,r,p,h,u,v,w,alt,z\n0,0,0,0,1,0,3,5,10\n1,0,0,0,1,0,3,5,10\n";
-  const MappedNavLog log = read(csv, map);
+  const Read log = read(csv, map);
   EXPECT_GT(log.model.dvl_absolute, SensorModel{}.dvl_absolute);
   std::string si = kMap;
   si.replace(si.find("{column: u, unit: knots}"), 24, "{column: u}");
@@ -101,7 +116,7 @@ TEST(MappedNav, DelimitersDeclaredOrDetected) {
 
 TEST(MappedNav, AbsoluteTimesSetTheEpochAtTheFirstWholeSecond) {
   const std::string map = std::string(kMap).replace(0, std::string(kMap).find('\n'), "time: {column: t, format: iso8601}");
-  const MappedNavLog log = read(
+  const Read log = read(
       "t,r,p,h,u,v,w,alt,z\n"
       "2026-05-14T10:00:00.5+02:00,0,0,0,1,0,0,5,10\n"
       "2026-05-14T08:00:01.75Z,0,0,0,1,0,0,5,10\n", map);
@@ -160,6 +175,67 @@ TEST(MappedNav, RowsAndMapsThatCannotBeReadAreRefusedPrecisely) {
   std::string bad_format = kMap;
   bad_format.replace(bad_format.find("seconds"), 7, "julian");
   EXPECT_NE(map_error(bad_format).find("time.format: expected iso8601, epoch or seconds, found 'julian'"), std::string::npos);
+}
+
+TEST(MappedNav, TheGridSpansTheSurfaceBeforeAndAfterTheDvlAndTheFixes) {
+  // Attitude from 0 s to 5 s, depth at 0, 2 and 4 s, the DVL from 2 s to 4 s; fixes at
+  // -1 s, 2.5 s and 6 s.
+  const std::string csv =
+      "t,r,p,h,u,v,w,alt,z\n"
+      "0,0,0,0,,,,,0.3\n"
+      "1,0,0,0,,,,,\n"
+      "2,0,0,0,1,0,0,5,0.5\n"
+      "3,0,0,0,1,0,0,5,\n"
+      "4,0,0,0,1,0,0,5,12\n"
+      "5,0,0,0,,,,,\n";
+  std::istringstream in(csv);
+  const std::string map = "time: {column: t}\nroll: {column: r, unit: rad}\npitch: {column: p, unit: rad}\n"
+                          "heading: {column: h, unit: rad}\nvx: {column: u}\nvy: {column: v}\nvz: {column: w}\n"
+                          "altitude: {column: alt}\ndepth: {column: z}\n";
+  const SensorModel model;
+  MappedNavLog m = read_mapped_nav(in, "log.csv", read_column_map(write_map(map), nav_map_schema(), true), model, std::nullopt);
+  const auto [first, last] = usable_span(m.series, m.max_gap);
+  // Within max_gap (60 s) of the attitude's and the depth's first and last readings.
+  EXPECT_EQ(first, 0.0 - 60.0);
+  EXPECT_EQ(last, 4.0 + 60.0);
+  const std::vector<double> fixes = {-1.0, 2.5, 6.0};
+  const NavOnGrid g = nav_on_grid(m.series, fixes, m.model, m.max_gap, m.limit);
+  const NavLog& log = g.log;
+  ASSERT_EQ(log.time, (std::vector<double>{-1.0, 0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0}));
+  // The DVL: its readings with the model's bound on its rows, 0 ± surface_max_speed elsewhere.
+  for (std::size_t k = 0; k < log.time.size(); ++k) {
+    const bool read_here = log.time[k] >= 2.0 && log.time[k] <= 4.0;
+    EXPECT_EQ(log.vx[k], read_here ? 1.0 : 0.0) << k;
+    EXPECT_EQ(log.half_widths.vx[k], read_here ? dvl_bound(model, 1.0) : model.surface_max_speed) << k;
+    EXPECT_EQ(log.half_widths.vz[k], read_here ? dvl_bound(model, 0.0) : model.surface_max_speed) << k;
+  }
+  const ChannelFill& dvl = log.half_widths.fill[3];
+  EXPECT_EQ(dvl.key, "surface_max_speed");
+  EXPECT_EQ(dvl.before, 3u);
+  EXPECT_EQ(dvl.after, 2u);
+  EXPECT_EQ(dvl.between, 0u);
+  // The depth between its readings: at the surface speed where a reading's box reaches
+  // the surface layer (0.3 and 0.5 m), else at max_depth_rate.
+  const ChannelFill& depth = log.half_widths.fill[7];
+  EXPECT_EQ(depth.key, "max_depth_rate");
+  EXPECT_EQ(depth.before, 1u);
+  EXPECT_EQ(depth.between, 2u);
+  EXPECT_EQ(depth.after, 2u);
+  // At 1 s: both readings (0.3 and 0.5 m) reach the layer: widened by 6.5 m/s x 1 s.
+  const double at_one_lo = std::max(0.3 - (1.5 + 0.2 * 0.3) - 6.5, 0.5 - (1.5 + 0.2 * 0.5) - 6.5);
+  const double at_one_hi = std::min(0.3 + (1.5 + 0.2 * 0.3) + 6.5, 0.5 + (1.5 + 0.2 * 0.5) + 6.5);
+  EXPECT_NEAR(log.depth[2] - log.half_widths.depth[2], at_one_lo, 1e-12);
+  EXPECT_NEAR(log.depth[2] + log.half_widths.depth[2], at_one_hi, 1e-12);
+  // Attitude, read on every row, is enclosed at the fixes' times only.
+  EXPECT_EQ(log.half_widths.fill[2].before, 1u);
+  EXPECT_EQ(log.half_widths.fill[2].after, 1u);
+  EXPECT_NE(g.grid_note.find("grid: the 3 rows with a DVL reading, of 6, and 5 samples before and after them"),
+            std::string::npos)
+      << g.grid_note;
+  const std::vector<std::string> lines = fill_lines(log.half_widths);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines[0], "vx, vy, vz: bridged by surface_max_speed at 5 samples without a reading: 3 before its first "
+                      "reading (2 s), 2 after its last reading (4 s)");
 }
 
 }  // namespace

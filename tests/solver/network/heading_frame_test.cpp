@@ -53,7 +53,7 @@ int misses(const SmoothTruth& truth, const SensorModel& model, double turn, doub
     m.vx[k] = c * n + s * e;
     m.vy[k] = -s * n + c * e;
   }
-  const TubeDomains d = sensor_domains_in(frameless_sensor_priors(m, model), margins);
+  const TubeDomains d = sensor_domains_in(frameless_sensor_priors(m, model, StepRegimes{}), margins);
   int outside = 0;
   for (std::size_t k = 0; k + 1 < m.size(); ++k) {
     const auto exact = truth.displacement(m.time[k], m.time[k + 1]);
@@ -155,7 +155,7 @@ TEST(HeadingFrame, WidensAboutAsMuchAsTurningTheHeadingBoxItself) {
   for (const SmoothTruth& truth : test::truths()) {
     const Mission m = test::mission_of(truth, model, 200, 51);
     const double margin = 0.2 * model.heading;
-    const TubeDomains after = sensor_domains_in(frameless_sensor_priors(m, model), FrameMargins{{margin, {}}, {}});
+    const TubeDomains after = sensor_domains_in(frameless_sensor_priors(m, model, StepRegimes{}), FrameMargins{{margin, {}}, {}});
     const SensorBoxes direct(m, model, FrameMargins{{margin, {}}, {}});
     for (std::size_t k = 0; k + 1 < m.size(); ++k) {
       const Vec3I d = direct.step_increment(k);
@@ -167,7 +167,8 @@ TEST(HeadingFrame, WidensAboutAsMuchAsTurningTheHeadingBoxItself) {
 
 // speed_bound() against the farthest corner of every sample's DVL box (the model's bound
 // with the depth's scale margin, or the per-sample half-widths), in long double, plus
-// 1.7321 max_acceleration dt / 2 for the longest step: never below, and within 1e-9.
+// 1.7321 (max_acceleration dt / 2 + surface_max_jerk dt² / 8) for the longest step:
+// never below, and within 1e-9.
 long double farthest_speed(const Mission& m) {
   long double largest = 0.0L, longest = 0.0L;
   const std::vector<double>* readings[3] = {&m.vx, &m.vy, &m.vz};
@@ -189,7 +190,8 @@ long double farthest_speed(const Mission& m) {
     largest = std::max(largest, std::sqrt(squared));
     if (k + 1 < m.size()) longest = std::max(longest, static_cast<long double>(m.time[k + 1]) - m.time[k]);
   }
-  return largest + 1.7321L * m.model.max_acceleration * longest / 2.0L;  // sqrt(3) rounded up, as documented
+  const long double stray = m.model.max_acceleration * longest / 2.0L + m.model.surface_max_jerk * longest * longest / 8.0L;
+  return largest + 1.7321L * stray;  // sqrt(3) rounded up, as documented
 }
 
 TEST(HeadingFrame, SpeedBoundHoldsTheFarthestCornerOfEveryDvlBox) {

@@ -69,7 +69,7 @@ struct Comparison {
 
 // The priors' increments against a scalar loop over SensorBoxes (no frame margin).
 Comparison compare_with_scalar(const Mission& m) {
-  const SensorPriors priors = frameless_sensor_priors(m, m.model);
+  const SensorPriors priors = frameless_sensor_priors(m, m.model, StepRegimes{});
   const SensorBoxes boxes(m, m.model, FrameMargins{});
   Comparison c;
   for (std::size_t k = 0; k + 1 < m.size(); ++k) {
@@ -118,7 +118,7 @@ TEST(SensorKernel, RateHullStepsAreLeftToTheScalarPath) {
   std::vector<Interval> dx(10), dy(10), dz(10);
   std::vector<float> north(10), east(10);
   const std::vector<std::size_t> left =
-      kernel_step_increments(m, m.model, 0, 10, StepIncrementArrays{dx.data(), dy.data(), dz.data(), north.data(), east.data()});
+      kernel_step_increments(m, m.model, 0, 10, StepIncrementArrays{dx.data(), dy.data(), dz.data(), north.data(), east.data()}, StepRegimes{});
   EXPECT_EQ(left.size(), 10u) << "every step of 0.1 s has J dt = 3 > 6 x 0.2";
 }
 
@@ -168,7 +168,7 @@ TEST(SensorKernel, RestoresTheRoundingMode) {
   WorldVelocityBoxes w;
   world_velocity_boxes(m, m.model, 0, 100, w);
   EXPECT_EQ(std::fegetround(), FE_TONEAREST);
-  frameless_sensor_priors(m, m.model);
+  frameless_sensor_priors(m, m.model, StepRegimes{});
   EXPECT_EQ(std::fegetround(), FE_TONEAREST);
 }
 
