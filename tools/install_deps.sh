@@ -2,7 +2,7 @@
 # Installs gesmi's build and test dependencies from Debian 12 packages.
 # Idempotent: packages already present are left alone; runs apt only when something is missing.
 set -eu
-packages="build-essential cmake pkg-config
+packages="build-essential cmake pkg-config ccache
  libeigen3-dev libboost-dev libboost-program-options-dev
  libhdf5-dev hdf5-tools libssl-dev libxxhash-dev libgeographiclib-dev libyaml-cpp-dev libhowardhinnant-date-dev libcairo2-dev libpng-dev
  libpixman-1-dev libfontconfig-dev libfreetype-dev libexpat1-dev libbrotli-dev libbz2-dev libaec-dev zlib1g-dev

@@ -97,7 +97,10 @@ void suspects(const Mission& m, const BlockMidpoints& b, std::size_t first, std:
               std::size_t span, double jerk, std::vector<double> (&scratch)[4], std::vector<std::size_t>& out) {
   if (to <= from) return;
   const std::size_t count = to - from;
-  const double* t = m.time.data() + from;
+  // The samples span before, at and span after each centre from `from` on (from >= span).
+  const double* before_t = m.time.data() + (from - span);
+  const double* at_t = m.time.data() + from;
+  const double* after_t = m.time.data() + (from + span);
   const double limit = jerk * (1.0 - 1e-9) - 1e-9;
   for (std::vector<double>& v : scratch) v.resize(count);
   double* __restrict a0 = scratch[0].data();
@@ -106,18 +109,23 @@ void suspects(const Mission& m, const BlockMidpoints& b, std::size_t first, std:
   double* __restrict excess = scratch[3].data();
   // Second divided difference = a2 w(k + span) - a0 w(k) + a1 w(k - span).
   for (std::size_t j = 0; j < count; ++j) {
-    const double h1 = t[j] - t[j - span], h2 = t[j + span] - t[j], c = 2.0 / (h1 + h2);
+    const double h1 = at_t[j] - before_t[j], h2 = after_t[j] - at_t[j], c = 2.0 / (h1 + h2);
     a1[j] = c / h1;
     a2[j] = c / h2;
     a0[j] = a1[j] + a2[j];
     excess[j] = -1.0;
   }
+  const std::size_t at = from - first;  // the block's index of `from`
   for (int i = 0; i < 3; ++i) {
-    const double* __restrict mid = b.mid[i].data() + (from - first);
-    const double* __restrict rad = b.rad[i].data() + (from - first);
+    const double* __restrict mid_before = b.mid[i].data() + (at - span);
+    const double* __restrict mid_at = b.mid[i].data() + at;
+    const double* __restrict mid_after = b.mid[i].data() + (at + span);
+    const double* __restrict rad_before = b.rad[i].data() + (at - span);
+    const double* __restrict rad_at = b.rad[i].data() + at;
+    const double* __restrict rad_after = b.rad[i].data() + (at + span);
     for (std::size_t j = 0; j < count; ++j) {
-      const double centre = a2[j] * mid[j + span] - a0[j] * mid[j] + a1[j] * mid[j - span];
-      const double radius = a2[j] * rad[j + span] + a0[j] * rad[j] + a1[j] * rad[j - span];
+      const double centre = a2[j] * mid_after[j] - a0[j] * mid_at[j] + a1[j] * mid_before[j];
+      const double radius = a2[j] * rad_after[j] + a0[j] * rad_at[j] + a1[j] * rad_before[j];
       excess[j] = std::max(excess[j], std::fabs(centre) - radius - limit);
     }
   }

@@ -1,13 +1,14 @@
 #pragma once
-// Locations the tests need, passed by CMake as compile definitions (never relative
-// to the working directory).
+// Locations the tests need (never relative to the working directory). CMake passes them
+// to paths.cpp alone, so that no other file's compile command names the checkout and a
+// compiler cache serves any clone of the project.
 
 #include <string>
 
 namespace gesmi::test {
 
-inline std::string source_dir() { return GESMI_SOURCE_DIR; }
-inline std::string bin_dir() { return GESMI_BIN_DIR; }
-inline std::string itf1788_dir() { return GESMI_ITF1788_DIR; }
+std::string source_dir();
+std::string bin_dir();
+std::string itf1788_dir();
 
 }  // namespace gesmi::test

@@ -14,7 +14,7 @@ struct CommandResult {
   std::string err;
 };
 
-/// Runs GESMI_BIN_DIR/<program> with the arguments (each quoted for the shell).
+/// Runs bin_dir()/<program> with the arguments (each quoted for the shell).
 /// A sanitizer report on the program's stderr fails the calling test.
 CommandResult run_program(const std::string& program, const std::vector<std::string>& args);
 inline CommandResult run_gesmi(const std::vector<std::string>& args) { return run_program("gesmi", args); }

@@ -30,7 +30,7 @@ std::pair<int, std::string> on_terminal(const std::string& command) {
 
 TEST(Progress, ALongSolveShowsItsStagesOnATerminalAndClearsTheLine) {
   const std::string dir = temp_folder("progress");
-  const std::string gesmi = std::string(GESMI_BIN_DIR) + "/gesmi";
+  const std::string gesmi = test::bin_dir() + "/gesmi";
   // 10^6 steps: a solve of about a second, longer than the line's 0.3 s delay (3 x 10^5
   // steps once took 0.6 s, and then less than the delay as the command got faster).
   ASSERT_EQ(run_gesmi({"simulate", "--seed", "3", "--duration", "100000", "-o", dir + "/m.h5"}).exit_code, 0);
@@ -57,7 +57,7 @@ TEST(Progress, ALongSolveShowsItsStagesOnATerminalAndClearsTheLine) {
 // each shows its phase and clears the line before its summary.
 TEST(Progress, SimulateExportAndImportShowTheirPhases) {
   const std::string dir = temp_folder("progress-io");
-  const std::string gesmi = std::string(GESMI_BIN_DIR) + "/gesmi";
+  const std::string gesmi = test::bin_dir() + "/gesmi";
   const auto expect_phase = [](const std::string& out, const std::string& label, const std::string& phase) {
     EXPECT_NE(out.find("\r\033[K" + label), std::string::npos) << out;
     EXPECT_NE(out.find(phase), std::string::npos) << out;
@@ -83,7 +83,7 @@ TEST(Progress, SimulateExportAndImportShowTheirPhases) {
 TEST(Progress, EstimateShowsItsLevelsAndKeepsQuietWithQ) {
   const std::string dir = temp_folder("progress-estimate");
   const std::string command =
-      std::string(GESMI_BIN_DIR) + "/gesmi estimate " + source_dir() + "/missions/setinv/seed004_example2.yaml -o " + dir;
+      test::bin_dir() + "/gesmi estimate " + source_dir() + "/missions/setinv/seed004_example2.yaml -o " + dir;
   auto [code, out] = on_terminal(command + "/e1");
   ASSERT_EQ(code, 0) << out;
   EXPECT_NE(out.find("\r\033[Kgesmi estimate: "), std::string::npos) << out;
@@ -102,7 +102,7 @@ TEST(Progress, EstimateShowsItsLevelsAndKeepsQuietWithQ) {
 TEST(Progress, AQuickCommandDrawsNothingOnATerminal) {
   const std::string dir = temp_folder("progress-quick");
   ASSERT_EQ(run_gesmi({"simulate", "--seed", "3", "--duration", "60", "-o", dir + "/m.h5"}).exit_code, 0);
-  const auto [code, out] = on_terminal(std::string(GESMI_BIN_DIR) + "/gesmi solve " + dir + "/m.h5 -o " + dir + "/r.h5");
+  const auto [code, out] = on_terminal(test::bin_dir() + "/gesmi solve " + dir + "/m.h5 -o " + dir + "/r.h5");
   ASSERT_EQ(code, 0) << out;
   EXPECT_EQ(out.find("gesmi solve: "), std::string::npos) << out;
 }
