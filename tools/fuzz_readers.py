@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Seeded mutation fuzzer of every reader of the `gesmi` command (docs/fuzzing.md).
+"""Seeded mutation fuzzer of every reader of the `gesmi` command (docs/testing.md).
 
     tools/fuzz_readers.py --gesmi build/bin/gesmi --seed 1 --cases 200 [--keep-failures DIR]
     tools/fuzz_readers.py --gesmi build/bin/gesmi --replay tests/data/fuzz

@@ -21,7 +21,7 @@ function(gesmi_link_static_archives target)
   set(entries "boost_program_options" "hdf5:${hdf5_dir}" "yaml-cpp" "GeographicLib" "cairo" "pixman-1" "fontconfig"
               "freetype" "png16" "brotlidec" "brotlicommon" "bz2" "expat" "crypto" "sz" "aec" "z")
   # Fonts and compression stay shared under the sanitizers, whose leak suppression names
-  # libfontconfig.so (docs/sanitizers.md).
+  # libfontconfig.so (docs/testing.md).
   set(shared_under_sanitizers "fontconfig" "freetype" "brotlidec" "brotlicommon" "bz2" "expat" "sz" "aec" "z")
   if(GESMI_SANITIZE)
     list(REMOVE_ITEM entries ${shared_under_sanitizers})

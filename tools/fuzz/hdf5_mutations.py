@@ -5,7 +5,7 @@ raw)` chooses one mutation as a plain dict (the "spec"), and `apply(spec, path)`
 copy of the seed in place. The mutations keep the file a valid HDF5 file (only its
 content is wrong) except `truncate`, and `raw_flip` which flips bytes anywhere in the
 file: those may break libhdf5 itself, so they are only picked when `raw` is true (not in
-the CI run; see docs/fuzzing.md).
+the CI run; see docs/testing.md).
 """
 
 import os
