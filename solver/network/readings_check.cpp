@@ -51,12 +51,18 @@ void world_boxes(const Mission& m, const SensorModel& model, std::size_t first, 
   }
   const double turn = m.heading_frame_margin, scale = m.frame_scale_margin;
   if (turn == 0.0 && scale == 0.0) return;
+  // Each bound plus its widening, rounded up: the sum to nearest moved up by a unit in
+  // the last place of its magnitude and the smallest subnormal.
+  const auto up = [](double x, double y) {
+    const double sum = x + y;
+    return sum + std::fabs(sum) * 0x1p-52 + std::numeric_limits<double>::denorm_min();
+  };
   for (std::size_t j = 0; j < last - first; ++j) {
     const double north = std::max(w.neg_lo[0][j], w.hi[0][j]), east = std::max(w.neg_lo[1][j], w.hi[1][j]);
     const double widen[2] = {frame_widening(turn, scale, east, north), frame_widening(turn, scale, north, east)};
     for (int i = 0; i < 2; ++i) {
-      w.neg_lo[i][j] = add_up(w.neg_lo[i][j], widen[i]);
-      w.hi[i][j] = add_up(w.hi[i][j], widen[i]);
+      w.neg_lo[i][j] = up(w.neg_lo[i][j], widen[i]);
+      w.hi[i][j] = up(w.hi[i][j], widen[i]);
     }
   }
 }
