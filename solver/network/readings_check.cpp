@@ -22,13 +22,6 @@ constexpr std::size_t kSpans[] = {1, 4, 16};
 constexpr std::size_t kWidestSpan = 16;
 constexpr std::size_t kBlock = 2048;
 
-// Plain double arithmetic of a few operations: a result moved outward by a relative 8
-// units in the last place of the largest magnitude involved plus the smallest normal
-// number covers the roundings to nearest.
-double outward(double largest) {
-  return 8.0 * std::numeric_limits<double>::epsilon() * largest + std::numeric_limits<double>::min();
-}
-
 Interval component(const WorldVelocityBoxes& w, int i, std::size_t j) {
   return Interval::from_bounds(-w.neg_lo[i][j], w.hi[i][j]);
 }
@@ -170,10 +163,10 @@ void gather_vertical_steps(Gather& g, const WorldVelocityBoxes& w, std::size_t f
   const double* hi = w.hi[2].data();
   for (std::size_t k = start; k < end && k + 1 < g.m.size(); ++k) {
     const double dt = g.m.time[k + 1] - g.m.time[k];
-    const double reach = g.regimes.speed(g.model, k) * dt;
-    const double speed_lo = -reach - outward(reach), speed_hi = reach + outward(reach);
+    const Interval speed = speed_step(g.m, k, g.regimes.speed(g.model, k));
+    const double speed_lo = speed.lo(), speed_hi = speed.hi();
     if (g.regimes.fallback(k)) {
-      g.evidence.dz.set(k, Interval::from_bounds(speed_lo, speed_hi));
+      g.evidence.dz.set(k, speed);
       continue;
     }
     const std::size_t j = k - first;
@@ -281,6 +274,11 @@ double window_jerk(const StepRegimes& regimes, const SensorModel& model, std::si
 }
 
 }  // namespace
+
+Interval speed_step(const Mission& mission, std::size_t k, double v) {
+  const double reach = v * (mission.time[k + 1] - mission.time[k]);
+  return Interval::from_bounds(-reach - outward(reach), reach + outward(reach));
+}
 
 ReadingsEvidence gather_evidence(const Mission& mission, const SensorModel& model, const StepRegimes& regimes) {
   ReadingsEvidence evidence(mission.size() > 0 ? mission.size() - 1 : 0);

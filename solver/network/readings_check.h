@@ -26,6 +26,16 @@ struct IntervalArray {
   Interval at(std::size_t k) const { return Interval::from_bounds(lo[k], hi[k]); }
 };
 
+/// A result of a few operations in plain double arithmetic, moved outward by this: a
+/// relative 8 units in the last place of the largest magnitude involved plus the smallest
+/// normal number cover the roundings to nearest.
+inline double outward(double largest) {
+  return 8.0 * std::numeric_limits<double>::epsilon() * largest + std::numeric_limits<double>::min();
+}
+
+/// dt [-v, v] for step k, outward: the increment of a step bounded by the speed v alone.
+Interval speed_step(const Mission& mission, std::size_t k, double v);
+
 /// What the readings show.
 struct ReadingsEvidence {
   /// Somewhere between samples centre - span and centre + span, |d²(R v)/dt²| >= least

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "solver/interval/rounding.h"
 #include "solver/network/readings_check.h"
@@ -26,13 +25,6 @@ void flag_fixes(const Mission& m, std::vector<std::uint8_t>& flags) {
     flags[k] |= StepRegimes::kSurface;
     if (t == m.time[k] && k > 0) flags[k - 1] |= StepRegimes::kSurface;
   }
-}
-
-// Plain double arithmetic of a few operations on non-huge values: every result is
-// moved outward by a relative 8 units in the last place of the largest magnitude
-// involved plus the smallest normal number, which covers the roundings to nearest.
-double outward(double largest) {
-  return 8.0 * std::numeric_limits<double>::epsilon() * largest + std::numeric_limits<double>::min();
 }
 
 // Surface flags from the lowest depths `lo` the robot can be at each sample: a step is
@@ -130,8 +122,7 @@ StepRegimes classify_steps(const Mission& mission, const SensorModel& model) {
       if (!found[k] || fallback[k]) continue;
       grew = true;
       fallback[k] = StepRegimes::kFallback;
-      const double reach = conservative.speed(model, k) * (mission.time[k + 1] - mission.time[k]) * (1.0 + 1e-15);
-      evidence.dz.set(k, Interval(-reach, reach).inflated(std::numeric_limits<double>::min()));
+      evidence.dz.set(k, speed_step(mission, k, conservative.speed(model, k)));
     }
     if (!grew) break;
   }

@@ -1,9 +1,11 @@
 #pragma once
-// Which bounds hold over each step (docs/model.md, "Regimes and the readings' check").
+// Which bounds hold over each step (docs/model.md, "Regimes: the surface, and the
+// readings' check").
 //
 // A step is in the surface regime when its possible depths reach the surface layer
-// (the depth boxes of its two samples, with the deepest point between them at the
-// surface speed) or a GPS fix falls in it (fixes are taken at the surface): it takes
+// (the lowest depths at its two samples that the barometer's boxes and the depth chain
+// allow, with the shallowest point between them at the surface speed) or a GPS fix
+// falls in it (fixes are taken at the surface): it takes
 // surface_max_jerk, and its displacement is also held by surface_max_speed. Elsewhere
 // it is submerged: max_jerk, and the rate hull (max_acceleration, max_attitude_rate).
 //
