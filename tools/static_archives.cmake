@@ -1,13 +1,13 @@
-# Start-up cost of the gesmi command (docs/performance.md, "Start-up"). Every shared
-# library costs the dynamic loader a mapping and symbol lookups at each start: Debian's
-# shared HDF5 loads libcurl and its ~25 libraries for a network driver gesmi never uses,
-# and cairo loads X11's; with them `gesmi --help` took 15 ms of CPU, 58 libraries. The
-# gesmi command links instead the static archives Debian ships in the same -dev packages
-# (same versions), down to compression and fonts: the linker takes only the objects
-# gesmi calls, and --as-needed drops the shared libraries nothing refers to any more.
-# The Python module and the tests keep the shared libraries (a static HDF5 next to h5py's shared one in one process would be
-# two HDF5 libraries). GESMI_STATIC_ARCHIVES=OFF links everything shared.
-option(GESMI_STATIC_ARCHIVES "link the gesmi command with the static archives of its dependencies" ON)
+# GESMI_STATIC_ARCHIVES=ON links the gesmi command with the static archives Debian ships
+# in the same -dev packages (same versions) instead of the shared libraries: the linker
+# takes only the objects gesmi calls, and --as-needed drops the shared libraries nothing
+# refers to any more. It saves the loader's work at each start (Debian's shared HDF5
+# loads libcurl and its ~25 libraries, cairo X11's): about 11 ms of CPU per command,
+# which matters only to scripts that run the command thousands of times. Off by default:
+# a program linked against the shared libraries gets their security updates.
+# The Python module and the tests always keep the shared libraries (a static HDF5 next to
+# h5py's shared one in one process would be two HDF5 libraries).
+option(GESMI_STATIC_ARCHIVES "link the gesmi command with the static archives of its dependencies" OFF)
 
 # gesmi_link_static_archives(<target> <shared libraries the target links when OFF>...)
 function(gesmi_link_static_archives target)
@@ -16,6 +16,7 @@ function(gesmi_link_static_archives target)
     target_link_libraries(${target} PRIVATE ${ARGN})
     return()
   endif()
+  find_package(Threads REQUIRED)
   get_filename_component(hdf5_dir "${HDF5_C_LIBRARY_hdf5}" DIRECTORY)
   # In link order: each archive before the libraries it calls.
   set(entries "boost_program_options" "hdf5:${hdf5_dir}" "yaml-cpp" "GeographicLib" "cairo" "pixman-1" "fontconfig"
@@ -46,15 +47,12 @@ function(gesmi_link_static_archives target)
   endforeach()
   target_link_options(${target} PRIVATE -Wl,--as-needed)
   target_link_libraries(${target} PRIVATE ${archives} ${CMAKE_DL_LIBS} Threads::Threads)
-  # The C++ runtime static too, and no position-independent executable: libstdc++'s
-  # loading and symbol lookups and the 20,000 relative relocations of a PIE were 2.6 of
-  # the 8.5 ms `gesmi --version` took, the shared fonts and compression 1.2
-  # (docs/performance.md, "Start-up"). Under the sanitizers the C++ runtime stays shared
-  # (theirs replaces the C++ allocation functions), as do fonts and compression.
+  # The C++ runtime static too, except under the sanitizers (theirs replaces the C++
+  # allocation functions), where fonts and compression stay shared as well.
   if(GESMI_SANITIZE)
     pkg_check_modules(GESMI_FONTS REQUIRED IMPORTED_TARGET fontconfig freetype2)
     target_link_libraries(${target} PRIVATE ${HDF5_C_LIBRARY_sz} PkgConfig::GESMI_FONTS ${HDF5_C_LIBRARY_z})
   else()
-    target_link_options(${target} PRIVATE -no-pie -static-libstdc++ -static-libgcc)
+    target_link_options(${target} PRIVATE -static-libstdc++ -static-libgcc)
   endif()
 endfunction()

@@ -67,8 +67,8 @@ class ArrowheadChain {
   void add_steps_again(std::span<const Vec3> delta, std::span<const double> reference);
   /// A step p_{k+1} - p_k = delta in terms of corrections from `from` (at p_k) and `to`
   /// (at p_{k+1}). Small against the positions once the reference is close: solving for
-  /// corrections keeps the chain's rounding to the corrections' size (issue: whole-process
-  /// speed, docs/comparison.md "When the smoother stops").
+  /// corrections keeps the chain's rounding to the corrections' size (docs/comparison.md,
+  /// "When the smoother stops").
   static Vec3 relative_step(const Vec3& delta, const Vec3& from, const Vec3& to) { return delta - (to - from); }
   /// W_k of the step from p_k to p_{k+1}, as the chain holds it (add_step's upper
   /// triangle, mirrored); meaningful until release_workspace().
@@ -134,7 +134,7 @@ class ArrowheadChain {
   std::size_t size() const { return n_; }
 
  private:
-  // Memory (issue: whole-process speed, 10^7 steps): solve() works in place. Its forward
+  // Memory (10^7 steps): solve() works in place. Its forward
   // pass overwrites diag_[k] with the conditional covariance S_k and eta_[k] with the
   // conditional mean c_k, each once it has been read for the last time; the means' backward
   // pass overwrites eta_[k] with the mean, the covariances' diag_[k] with the covariance. The

@@ -1,6 +1,6 @@
 #pragma once
 // The smoother's first linearisation point from the same problem on a coarse chain
-// (issue: whole-process speed; docs/comparison.md, "Where the linearisations start").
+// (docs/comparison.md, "Where the linearisations start").
 //
 // Without biases every factor but the detections' is linear in the positions (the
 // depth's variance follows the estimate's depth, a weak dependence), so the passes of the

@@ -3,7 +3,7 @@
 // four angles a call where the processor has AVX2, two otherwise. The sensor kernel
 // takes one sine and one cosine of each of the three angle readings of every sample;
 // glibc's scalar sin and cos were 1.9 ms of a cold solve's 180,000 pairs here, libmvec's
-// 0.3 ms (docs/performance.md, "The sensor kernel's sines from libmvec").
+// 0.3 ms (docs/performance.md, "Sines and cosines from libmvec").
 //
 // libmvec's functions are not those of libm: glibc states that they "were tested (via
 // reasonable random sampling) to pass 4-ulp maximum relative error criterion on their

@@ -1,5 +1,5 @@
 #pragma once
-// Options of the reference-like mission simulator (issue: mission data).
+// Options of the reference-like mission simulator.
 
 #include <cstdint>
 #include <string>

@@ -37,9 +37,9 @@ SweepResult chain_forward(std::span<Interval> x, std::span<const Interval> v);
 SweepResult chain_backward(std::span<Interval> x, std::span<Interval> v);
 
 /// The three chains of a tube (one per axis) swept together: one loop over the three,
-/// about 15 % faster than three sweeps (docs/performance.md). Each chain ends bit for
-/// bit as chain_forward (chain_backward) leaves it, up to the first chain, in axis
-/// order, that empties: that one is the result, as one sweep per chain would find it.
+/// about a fifth faster than three sweeps (docs/performance.md, "Three chains swept
+/// together"). Each chain ends bit for bit as chain_forward (chain_backward) leaves it,
+/// up to the first chain, in axis order, that empties: that one is the result, as one sweep per chain would find it.
 /// The chains after it may be left partly swept (those that emptied at the same step
 /// normalised). Otherwise the result is the largest narrowing over the three.
 struct ChainsSweepResult {

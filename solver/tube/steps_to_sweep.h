@@ -2,7 +2,7 @@
 // Which steps of a tube's three chains a sweep must take again (chain_sweep.h). After
 // the first sweeps of a mission solve most of the tube no longer moves: of the 59,994
 // steps of the reference mission, the third and later sweeps of a pass narrow 0.5 to
-// 24 % (docs/performance.md, "Sweeps over the steps that can still move").
+// 24 % (docs/performance.md, "Chain sweeps over marked steps").
 //
 // A step not taken would leave its domains as they are, so sweeps over the marked steps
 // end with the bounds of full sweeps (as numbers; a zero may keep its other sign):

@@ -1,4 +1,4 @@
-"""The outputs of set-inversion localization and estimation (issue 16): the Python
+"""The outputs of set-inversion localization and estimation: the Python
 binding's outlier fields (agreed outliers and inliers, outlier sets, q_lower, safety),
 OUT/summary.json written by `gesmi localize` (data numbered from 1 as in the scenario
 file) and by `gesmi estimate` on seed 004's Example 2, checked against a grid."""

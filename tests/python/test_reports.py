@@ -141,7 +141,7 @@ def test_every_other_command_reports(folder, mission_file):
     assert rep["sweeps"] > 0 and len(rep["x4"]) == 2
     scenario = os.path.join(SOURCE, "missions", "localization", "triangle_two_hypotheses.yaml")
     rep = report("localize", scenario, "-o", str(folder / "loc"))
-    assert rep["localization"]["found"] and len(rep["outputs"]) == 7  # summary.json since issue 16
+    assert rep["localization"]["found"] and len(rep["outputs"]) == 7  # summary.json among them
     example2 = os.path.join(SOURCE, "missions", "setinv", "seed004_example2.yaml")
     rep = report("estimate", example2, "-o", str(folder / "est"))
     assert rep["estimation"]["levels"][1]["q"] == 1 and rep["estimation"]["levels"][1]["proved_nonempty"]

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 
+#include "tests/support/h5py_edits.h"
 #include "tests/support/run_command.h"
 
 namespace gesmi::test {
@@ -171,20 +172,14 @@ TEST(BadInput, TruncatedOrForeignHdf5IsRefusedBySolveAndExport) {
   };
   for (const Case& c : exports) run_case(c, "csv");
   // Valid HDF5 with a missing dataset or a wrong shape, edited by Debian's h5py.
-  const auto edited = [&](const std::string& name, const std::string& edit) {
-    const std::string path = temp_folder("bad-input-h5") + "/" + name;
-    fs::copy_file(mission, path);
-    const std::string script = path + ".py";
-    std::ofstream(script) << "import h5py, numpy as np, sys\nf = h5py.File(sys.argv[1], 'r+')\n" << edit << "\nf.close()\n";
-    EXPECT_EQ(std::system(("/usr/bin/python3 " + script + " " + path).c_str()), 0);
-    return path;
-  };
-  const std::string no_depth = edited("no_depth.h5", "del f['/nav/depth']");
+  const std::vector<std::string> copies = h5py_edited_copies(
+      mission, {"del f['/nav/depth']", "f['/gps/halfwidth'] = np.ones((2, 3))", "f['/marks/time'][0] = np.nan"});
+  const std::string& no_depth = copies[0];
   run_case({"missing dataset", {}, {"export", no_depth}, {no_depth + ": /nav/depth: missing dataset"}}, "csv");
   run_case({"missing dataset (solve)", {}, {"solve", no_depth}, {no_depth + ": /nav/depth: missing dataset"}});
-  const std::string bad_bounds = edited("bad_bounds.h5", "f['/gps/halfwidth'] = np.ones((2, 3))");
+  const std::string& bad_bounds = copies[1];
   run_case({"wrong shape", {}, {"export", bad_bounds}, {bad_bounds + ": /gps/halfwidth: expected 2 x 2"}}, "csv");
-  const std::string nan_time = edited("nan_time.h5", "f['/marks/time'][0] = np.nan");
+  const std::string& nan_time = copies[2];
   run_case({"NaN in a dataset", {}, {"export", nan_time, "--format", "gesmi-txt"}, {nan_time + ": /marks/time: row 0"}}, "log.txt");
   // A folder that is not empty is refused before anything is read.
   run_case({"export into a full folder", {{"keep.txt", "x"}}, {"export", mission, "-o", "@"}, {"the folder exists and is not empty"}});

@@ -1,4 +1,4 @@
-// The operator loop through the gesmi command (issue: operator loop): marks
+// The operator loop through the gesmi command: marks
 // editing, warm rerun equal to a cold solve, association without numbers, windows
 // holding the missed detections, the outlier-tolerant solve, and bad inputs.
 

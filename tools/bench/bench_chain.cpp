@@ -1,6 +1,6 @@
 // 1-D chain x(k+1) = x(k) + v(k) of 10^6 steps with intersection: one forward and
 // one backward sweep, with the upward-rounding kernel and the portable version.
-// Target (issue 2): <= 3 ns per step per sweep direction.
+// Target: <= 3 ns per step per sweep direction.
 
 #include <benchmark/benchmark.h>
 

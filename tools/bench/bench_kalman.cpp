@@ -2,7 +2,7 @@
 // linearised until converged (its default tolerance), from its default start (a coarse
 // chain's solution) and, as argument 1, from the dead reckoning (docs/comparison.md,
 // "Where the linearisations start").
-// Target (issue: Kalman baseline): <= 100 ms.
+// Target: <= 100 ms.
 
 #include <benchmark/benchmark.h>
 

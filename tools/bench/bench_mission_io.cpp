@@ -1,7 +1,7 @@
-// Mission data (issue 3): loading a 60,000-sample mission (target <= 20 ms), the
+// Mission data: loading a 60,000-sample mission (target <= 20 ms), the
 // peak memory of loading a 10^7-sample mission (target: at most two copies of the
 // data), and simulating 6e4 / 1e6 / 1e7 samples (target: seconds). Also reading a
-// 60,000-step result as a warm rerun reads it (issue: whole-process speed).
+// 60,000-step result as a warm rerun reads it.
 //
 // Peak memory is read from /proc/self/status: VmHWM is reset through
 // /proc/self/clear_refs ("5") just before the read, so the counter

@@ -2,7 +2,7 @@
 // fixpoint (60,000 steps, 6 mines), its scaling with mission length, the sensor
 // enclosures (build), the warm rerun after one added detection, the association of
 // marks without numbers and the outlier-tolerant solve.
-// Targets (issues): cold <= 20 ms; 10^7 steps <= 5 s; warm <= 2 ms; association of
+// Targets: cold <= 20 ms; 10^7 steps <= 5 s; warm <= 2 ms; association of
 // 12 marks <= 1 s; Q = 2 outlier solve <= 10 x cold.
 
 #include <benchmark/benchmark.h>

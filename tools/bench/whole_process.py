@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Whole-process cost of the gesmi commands (docs/performance.md, "Whole process"):
+"""Whole-process cost of the gesmi commands (docs/performance.md, "Current figures"):
 each command run as a process, several times, with its CPU time (user + system, from
 wait4, and each of the two: on a virtual machine the system time is mostly the host
 supplying fresh memory, and varies with what ran before, docs/performance.md; the kernel
@@ -18,7 +18,7 @@ after one missed mark is found (the simulator's first missed mark, its true rang
 
 --pause waits before each run, as an operator does between commands: on a virtual
 machine the memory a command gets back right after another freed it is cheaper than
-after a pause (docs/performance.md, "The heap back in small pages").
+after a pause (docs/performance.md, "How to reproduce").
 
 --vs compares two builds on a shared machine, whose speed drifts between minutes: each
 command of the two is run in turn (A B A B ..., after one pair not counted), each in its
@@ -29,8 +29,8 @@ and the ratio of the user times alone, which the host's supply of fresh memory m
 timer ticks, so for a command of tens of milliseconds the split is coarse and that ratio
 noisier than the CPU's).
 Copy both binaries into one folder first: one run from the build tree it was linked in
-started up to a tenth slower than its copy here (docs/performance.md, "Paired runs need
-both binaries in one folder"); the commands a change does not touch should give about 1.
+started up to a tenth slower than its copy here (docs/performance.md, "How to
+reproduce"); the commands a change does not touch should give about 1.
 """
 import argparse
 import os

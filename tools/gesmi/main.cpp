@@ -1,5 +1,7 @@
 // gesmi: guaranteed estimation of seamarks with intervals. Dispatches to subcommands.
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -11,7 +13,6 @@
 #include "io/io_version.h"
 #include "io/text/message_text.h"
 #include "tools/gesmi/command.h"
-#include "tools/gesmi/command_heap.h"
 
 namespace gesmi::cli {
 
@@ -36,6 +37,16 @@ void print_help() {
                 c.summary.data());
   std::printf("\n'gesmi <command> --help' describes a command; 'gesmi --version' prints the version. Exit codes: 0 ok, "
               "2 bad input, 3 inconsistent data.\n");
+}
+
+// A solve frees and allocates arrays of many MiB all along. glibc by default maps each
+// block of 128 kB or more on its own and unmaps it when freed, so that its pages are
+// faulted in again at the next allocation; here blocks up to 32 MiB come from the heap,
+// which is never trimmed, with one arena for every thread (mallopt(3)).
+void keep_freed_memory_for_reuse() {
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, -1);
+  mallopt(M_ARENA_MAX, 1);
 }
 
 // Every message leaves through here: one line whatever it holds (control characters
@@ -65,7 +76,7 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
   const std::string who = "gesmi " + args[0];
-  use_command_heap();
+  keep_freed_memory_for_reuse();
   gesmi::io::set_command_line(args);  // recorded in every file this run writes
   try {
     return found->run(std::span<const std::string>(args).subspan(1));

@@ -8,9 +8,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "io/format_error.h"
 #include "io/hdf5/h5_file.h"
+#include "tests/support/h5py_edits.h"
 #include "tests/support/run_command.h"
 #include "tests/support/tiny_mission.h"
 
@@ -94,13 +98,9 @@ TEST(MissionFile, IsReadableByH5py) {
 
 // A valid mission file edited by h5py (independent of gesmi's writer).
 std::string edited(const std::string& python_edit) {
-  const std::string folder = test::temp_folder("edit");
-  const std::string path = folder + "/m.h5";
+  const std::string path = test::temp_folder("edit") + "/m.h5";
   write_mission(sample_mission(), path);
-  const std::string script = folder + "/edit.py";
-  std::ofstream(script) << "import h5py, numpy as np, sys\nf = h5py.File(sys.argv[1], 'r+')\n" << python_edit << "\nf.close()\n";
-  EXPECT_EQ(std::system(("/usr/bin/python3 " + script + " " + path).c_str()), 0);
-  return path;
+  return test::h5py_edited_copy(path, python_edit);
 }
 
 // gesmi kalman reads the truth after its smoothing (MissionReader::read_truth), from the
@@ -248,19 +248,22 @@ TEST(MissionFile, NamesTheProblemOfEveryBadFile) {
 }
 
 TEST(MissionFile, ReportsMissingDatasetsWrongShapesAndBadAttributes) {
-  EXPECT_NE(expect_error(edited("del f['/nav/depth']")).find("/nav/depth: missing dataset"), std::string::npos);
-  EXPECT_NE(expect_error(edited("del f['/nav/attitude']\nf['/nav/attitude'] = np.zeros((3001, 2))"))
-                .find("/nav/attitude: expected 3001 x 3, found 3001 x 2"),
-            std::string::npos);
-  EXPECT_NE(expect_error(edited("del f['/nav/altitude']\nf['/nav/altitude'] = np.zeros(10)")).find("/nav/altitude"),
-            std::string::npos);
-  EXPECT_NE(expect_error(edited("f['/nav/time'][5] = np.nan")).find("/nav/time: row 5: time is NaN"), std::string::npos);
-  EXPECT_NE(expect_error(edited("del f['/model'].attrs['heading']")).find("/model: missing attribute heading"),
-            std::string::npos);
-  EXPECT_NE(expect_error(edited("f['/model'].attrs['sonar_side'] = np.bytes_(b'left')")).find("sonar_side"),
-            std::string::npos);
-  EXPECT_NE(expect_error(edited("f.attrs['format'] = np.bytes_(b'other')")).find("not a gesmi mission file"),
-            std::string::npos);
+  const std::pair<std::string, std::string> cases[] = {
+      {"del f['/nav/depth']", "/nav/depth: missing dataset"},
+      {"del f['/nav/attitude']\nf['/nav/attitude'] = np.zeros((3001, 2))", "/nav/attitude: expected 3001 x 3, found 3001 x 2"},
+      {"del f['/nav/altitude']\nf['/nav/altitude'] = np.zeros(10)", "/nav/altitude"},
+      {"f['/nav/time'][5] = np.nan", "/nav/time: row 5: time is NaN"},
+      {"del f['/model'].attrs['heading']", "/model: missing attribute heading"},
+      {"f['/model'].attrs['sonar_side'] = np.bytes_(b'left')", "sonar_side"},
+      {"f.attrs['format'] = np.bytes_(b'other')", "not a gesmi mission file"},
+  };
+  const std::string path = test::temp_folder("edits") + "/m.h5";
+  write_mission(sample_mission(), path);
+  std::vector<std::string> edits;
+  for (const auto& c : cases) edits.push_back(c.first);
+  const std::vector<std::string> copies = test::h5py_edited_copies(path, edits);
+  for (std::size_t i = 0; i < copies.size(); ++i)
+    EXPECT_NE(expect_error(copies[i]).find(cases[i].second), std::string::npos) << cases[i].first;
 }
 
 }  // namespace

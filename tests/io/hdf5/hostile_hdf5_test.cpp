@@ -9,11 +9,15 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <span>
+#include <string>
+#include <vector>
 
 #include "io/exports/result_exports.h"
 #include "io/files/mission_file.h"
 #include "io/files/result_file.h"
 #include "io/format_error.h"
+#include "tests/support/h5py_edits.h"
 #include "tests/support/paths.h"
 #include "tests/support/run_command.h"
 
@@ -37,15 +41,8 @@ const Samples& samples() {
   return s;
 }
 
-// A copy of `source` edited by a few lines of h5py ('f' is the open file).
 std::string edited(const std::string& source, const std::string& python_edit) {
-  const std::string folder = test::temp_folder("hostile");
-  const std::string path = folder + "/edited.h5";
-  fs::copy_file(source, path);
-  const std::string script = folder + "/edit.py";
-  std::ofstream(script) << "import h5py, numpy as np, sys\nf = h5py.File(sys.argv[1], 'r+')\n" << python_edit << "\nf.close()\n";
-  EXPECT_EQ(std::system(("/usr/bin/python3 " + script + " " + path).c_str()), 0) << python_edit;
-  return path;
+  return test::h5py_edited_copy(source, python_edit);
 }
 
 struct Case {
@@ -54,9 +51,8 @@ struct Case {
 };
 
 template <class Read>
-void expect_refused(const std::string& source, const Case& c, Read read) {
+void expect_refused_file(const std::string& path, const Case& c, Read read) {
   SCOPED_TRACE(c.edit);
-  const std::string path = edited(source, c.edit);
   try {
     read(path);
     ADD_FAILURE() << "accepted";
@@ -66,6 +62,15 @@ void expect_refused(const std::string& source, const Case& c, Read read) {
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     EXPECT_NE(what.find(c.must_name), std::string::npos) << "wanted '" << c.must_name << "' in: " << what;
   }
+}
+
+// Each case's edit on a copy of `source` (all in one h5py process), each copy refused.
+template <class Read>
+void expect_refused(const std::string& source, std::span<const Case> cases, Read read) {
+  std::vector<std::string> edits;
+  for (const Case& c : cases) edits.push_back(c.edit);
+  const std::vector<std::string> paths = test::h5py_edited_copies(source, edits);
+  for (std::size_t i = 0; i < cases.size(); ++i) expect_refused_file(paths[i], cases[i], read);
 }
 
 TEST(HostileHdf5, MissionAttributesMustBeOneValueOfTheRightKind) {
@@ -86,7 +91,7 @@ TEST(HostileHdf5, MissionAttributesMustBeOneValueOfTheRightKind) {
       {"del f.attrs['format_version']", "missing attribute format_version"},
       {"f['/model'].attrs['heading'] = np.longdouble(0.01)", "/model: attribute heading is wider than 64 bits"},
   };
-  for (const Case& c : cases) expect_refused(samples().mission, c, [](const std::string& p) { return read_mission(p); });
+  expect_refused(samples().mission, cases, [](const std::string& p) { return read_mission(p); });
 }
 
 TEST(HostileHdf5, MissionDatasetsAreCheckedBeforeAnythingIsAllocated) {
@@ -120,7 +125,7 @@ TEST(HostileHdf5, MissionDatasetsAreCheckedBeforeAnythingIsAllocated) {
       {"f['/truth/position'][3, 1] = np.nan", "/truth/position: row 3: position is NaN"},
       {"f['/truth/mines'][0, 0] = np.inf", "/truth/mines: row 0: position is infinite"},
   };
-  for (const Case& c : cases) expect_refused(samples().mission, c, [](const std::string& p) { return read_mission(p); });
+  expect_refused(samples().mission, cases, [](const std::string& p) { return read_mission(p); });
 }
 
 TEST(HostileHdf5, FilesAUserMayWriteWithH5pyAreStillRead) {
@@ -165,7 +170,7 @@ TEST(HostileHdf5, EditedResultsAreRefusedNamingWhatDiffers) {
        "lo.astype('<f8').tobytes())\nf['/tube/lower'].attrs['xxh128'] = h",
        "/: attributes or dataset digests differ from the XXH3-128 digest"},
   };
-  for (const Case& c : cases) expect_refused(samples().result, c, [](const std::string& p) { return read_result(p); });
+  expect_refused(samples().result, cases, [](const std::string& p) { return read_result(p); });
 }
 
 // A result of more than two blocks of rows (H5File::kBlockRows), made once, or why it
@@ -216,7 +221,7 @@ TEST(HostileHdf5, ABadRowInALaterBlockIsNamedOnceTheDigestsAreChecked) {
       {cross_increment.c_str(), "/increments/upper: contents differ"},
       {cross_increment_redigested.c_str(), named_increment.c_str()},
   };
-  for (const Case& c : cases) expect_refused(result, c, [](const std::string& p) { return read_result(p); });
+  expect_refused(result, cases, [](const std::string& p) { return read_result(p); });
 }
 
 TEST(ResultTubeRows, AreTheWholeTubeInOrderBlockByBlock) {
@@ -258,9 +263,12 @@ TEST(HostileHdf5, TheTubeCsvExportWritesNothingForAnEditedTube) {
       {cross_redigested.c_str(), "/: attributes or dataset digests differ"},
       {"f.attrs['sweeps'] = np.int64(999)", "/: attributes or dataset digests differ"},
   };
-  for (const Case& c : cases) {
+  const std::vector<std::string> paths = test::h5py_edited_copies(result, {cases[0].edit, cases[1].edit, cases[2].edit});
+  for (std::size_t i = 0; i < std::size(cases); ++i) {
+    const Case& c = cases[i];
     SCOPED_TRACE(c.edit);
-    const std::string path = edited(result, c.edit), folder = test::temp_folder("hostile-tube-csv");
+    const std::string& path = paths[i];
+    const std::string folder = test::temp_folder("hostile-tube-csv");
     const test::CommandResult run = test::run_gesmi({"export", path, "--format", "tube-csv", "-o", folder + "/t.csv"});
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_NE(run.err.find(path + ": " ), std::string::npos) << run.err;
@@ -298,7 +306,7 @@ TEST(HostileHdf5, PartialReadsCheckWhatTheyReadAndTheRootDigest) {
       {"f.attrs['sweeps'] = np.int64(999)", "/: attributes or dataset digests differ"},
       {"f['/tube/lower'].attrs['xxh128'] = 'ab'", "/: attributes or dataset digests differ"},
   };
-  for (const Case& c : cases) expect_refused(samples().result, c, without_tube);
+  expect_refused(samples().result, cases, without_tube);
   const std::string tube_edited = edited(samples().result, "u = f['/tube/upper'][:]\nu[100:200] += 50\nf['/tube/upper'][:] = u");
   const SolveResult partial = without_tube(tube_edited);
   EXPECT_TRUE(partial.solution.domains.px.empty());
@@ -334,8 +342,11 @@ TEST(HostileHdf5, ResultsOfEarlierVersionsAreReadButCheckedValueByValue) {
       {"o = f['/marks/outlier'][:]\no[0] = 5\nf['/marks/outlier'][:] = o", "/marks/outlier: row 0: expected 0 or 1"},
       {"f.attrs['mine_count'] = np.int64(65)", "attribute mine_count must be between 0 and 64"},
   };
-  for (const Case& c : cases)
-    expect_refused(samples().result, {(strip + c.edit).c_str(), c.must_name}, [](const std::string& p) { return read_result(p); });
+  std::vector<std::string> stripped_edits;
+  for (const Case& c : cases) stripped_edits.push_back(strip + c.edit);
+  std::vector<Case> stripped;
+  for (std::size_t i = 0; i < std::size(cases); ++i) stripped.push_back({stripped_edits[i].c_str(), cases[i].must_name});
+  expect_refused(samples().result, stripped, [](const std::string& p) { return read_result(p); });
   // The same tube checks when the tube is handed over block by block (gesmi export
   // --format tube-csv), which then writes no file.
   const auto streamed = [](const std::string& p) {
@@ -343,9 +354,13 @@ TEST(HostileHdf5, ResultsOfEarlierVersionsAreReadButCheckedValueByValue) {
                                std::span<const Interval>) {};
     return read_result(p, {.waterfall = false, .tube_rows = ignore});
   };
-  for (const Case& c : {cases[2], cases[3]}) {
-    expect_refused(samples().result, {(strip + c.edit).c_str(), c.must_name}, streamed);
-    const std::string path = edited(samples().result, strip + c.edit), folder = test::temp_folder("tube-csv-old");
+  const std::vector<Case> tube_cases = {stripped[2], stripped[3]};
+  const std::vector<std::string> tube_edited_paths = test::h5py_edited_copies(samples().result, {tube_cases[0].edit, tube_cases[1].edit});
+  for (std::size_t i = 0; i < tube_cases.size(); ++i) {
+    const Case& c = tube_cases[i];
+    const std::string& path = tube_edited_paths[i];
+    expect_refused_file(path, c, streamed);
+    const std::string folder = test::temp_folder("tube-csv-old");
     const test::CommandResult run = test::run_gesmi({"export", path, "--format", "tube-csv", "-o", folder + "/t.csv"});
     EXPECT_EQ(run.exit_code, 2) << c.edit;
     EXPECT_NE(run.err.find(c.must_name), std::string::npos) << run.err;
@@ -376,8 +391,7 @@ TEST(HostileHdf5, FormatFiveResultsAreCheckedWithTheirSha256) {
       // A format-5 file is not checked with XXH3-128 because it says it is of format 6.
       {"f.attrs.modify('format_version', 6)", "/: missing attribute navigation_xxh128"},
   };
-  for (const Case& c : cases)
-    expect_refused(format_5_file("result-format5.h5"), c, [](const std::string& p) { return read_result(p); });
+  expect_refused(format_5_file("result-format5.h5"), cases, [](const std::string& p) { return read_result(p); });
 }
 
 TEST(HostileHdf5, AFormatFiveResultWarmStartsAsItsFormatSixTwin) {
