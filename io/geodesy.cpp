@@ -62,7 +62,6 @@ void set_geodetic_gps(Mission& m) {
 double deepest(const Mission& m) {
   // The floor under the robot: its depth and altitude plus their bounds, and the
   // mine's depth band.
-  require_readings(m, "deepest");
   double deepest = 0.0, longest = 0.0;
   for (std::size_t k = 0; k < m.size(); ++k) {
     const double depth =

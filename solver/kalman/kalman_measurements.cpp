@@ -93,9 +93,6 @@ BiasVec bias_prior_sigma(const SensorModel& model, double f) {
 
 std::vector<MarkSample> mark_samples(const Mission& m) {
   if (m.size() == 0) return {};  // no sample to take (step_at() needs one)
-  for (const std::vector<double>* v : {&m.roll, &m.pitch, &m.heading, &m.altitude})
-    if (v->size() != m.size() && m.mark_count() > 0)
-      throw std::logic_error("mark_samples: the mission's attitude or altitude were released (MissionReadings)");
   std::vector<MarkSample> samples;
   samples.reserve(m.mark_count());
   for (std::size_t j = 0; j < m.mark_count(); ++j) {

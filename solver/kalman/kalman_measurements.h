@@ -114,9 +114,8 @@ struct MeasurementOptions {
   double noise_factor = 1.0;
   bool biases = false;  // compute the bias terms (zero otherwise)
   FactorSet factors = FactorSet::all;
-  /// The marks' samples kept aside (mark_samples()) when the mission's attitude and
-  /// altitude were released; empty: read from the mission. A view: the samples must
-  /// outlive these options.
+  /// The marks' samples (mark_samples()), computed once for every pass; empty: read
+  /// from the mission. A view: the samples must outlive these options.
   std::span<const MarkSample> marks{};
 };
 

@@ -70,21 +70,8 @@ std::string KalmanOptions::validate() const {
 
 namespace {
 
-// What the passes of a smoothing with its odometry kept do not read: the DVL, the
-// attitude and the altitude (the marks' samples are kept aside), and every per-sample
-// half-width (the smoother takes the model's bounds). 56 bytes a step, 120 with
-// half-widths; the time and depth stay.
-void release_after_dead_reckoning(Mission& m) {
-  NavHalfWidths& h = m.half_widths;
-  for (std::vector<double>* v : {&m.vx, &m.vy, &m.vz, &m.roll, &m.pitch, &m.heading, &m.altitude, &h.roll, &h.pitch,
-                                 &h.heading, &h.vx, &h.vy, &h.vz, &h.depth, &h.altitude})
-    std::vector<double>().swap(*v);  // (clear() would keep the memory)
-}
-
-// `releasable`: the mission itself when its caller gave up its readings, else null.
 KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const PositionFix> fixes,
-                    const KalmanOptions& o, Mission* releasable) {
-  require_readings(m, "kalman_smooth");
+                    const KalmanOptions& o) {
   const std::size_t n = m.size(), k_mines = static_cast<std::size_t>(m.mine_count);
   const std::size_t q = 3 * k_mines + (o.biases ? kBiasCount : 0);
   // Without biases the odometry does not depend on the linearisation point: the dead
@@ -131,10 +118,8 @@ KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const 
   // The mines are placed at their first detection in the first pass (the coarse chain's, below).
   lin.mine.assign(k_mines, Vec3d::Zero());
   lin.mine_known.assign(k_mines, 0);
-  // Released before the chain's blocks are allocated: those reuse their memory.
   const std::vector<MarkSample> marks = mark_samples(m);
-  if (releasable && fixed_odometry) release_after_dead_reckoning(*releasable);
-  // (it reads the time and depth, kept; before the chain takes the steps' information)
+  // (before the chain takes the steps' information)
   const CoarseStart coarse = fixed_odometry && o.start == KalmanStart::coarse && o.max_iterations >= 1
                                  ? start_from_coarse_chain(m, model, fixes, o, marks, odometry_delta, step_information, lin)
                                  : CoarseStart{};
@@ -282,12 +267,7 @@ KalmanResult smooth(const Mission& m, const SensorModel& model, std::span<const 
 
 KalmanResult kalman_smooth(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
                            const KalmanOptions& options) {
-  return smooth(mission, model, fixes, options, nullptr);
-}
-
-KalmanResult kalman_smooth(Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
-                           const KalmanOptions& options, MissionReadings readings) {
-  return smooth(mission, model, fixes, options, readings == MissionReadings::released_after_use ? &mission : nullptr);
+  return smooth(mission, model, fixes, options);
 }
 
 Containment three_sigma_containment(const KalmanResult& r, const Mission& m) {

@@ -92,16 +92,6 @@ struct KalmanResult {
 
 KalmanResult kalman_smooth(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
                            const KalmanOptions& options = {});
-/// The same; with MissionReadings::released_after_use and without biases, the readings
-/// the passes after the dead reckoning do not read are emptied once it is done: the DVL,
-/// the attitude and the altitude (the marks' samples are kept aside), and every
-/// per-sample half-width (56 bytes a step, 120 with half-widths; the time and depth
-/// stay). The chain's blocks then reuse their memory: the peak is lower by up to as
-/// much. With biases every pass reads them, and nothing is released. Once released they
-/// stay released, also when the smoother then throws or solves nothing
-/// (max_iterations < 1): put them back (read the mission again) before reusing it.
-KalmanResult kalman_smooth(Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
-                           const KalmanOptions& options, MissionReadings readings);
 
 /// Where the truth of a simulated mission lies (NaN without truth): the fraction of
 /// steps whose true position is within 3 sigma on north and on east (horizontal), and

@@ -39,21 +39,4 @@ std::optional<std::size_t> longest_gap(const std::vector<double>& time) {
   return std::nullopt;
 }
 
-std::array<std::vector<double>*, 8> released_readings(Mission& m) {
-  NavHalfWidths& h = m.half_widths;
-  return {&m.vx, &m.vy, &m.vz, &m.depth, &h.vx, &h.vy, &h.vz, &h.depth};
-}
-
-void require_readings(const Mission& m, const char* caller) {
-  if (readings_released(m))
-    throw std::logic_error(std::string(caller) + ": the mission's navigation readings were released (MissionReadings)");
-}
-
-bool readings_released(const Mission& m) {
-  // (the half-widths may be absent: the readings themselves say it)
-  for (const std::vector<double>* v : {&m.vx, &m.vy, &m.vz, &m.depth, &m.roll, &m.pitch, &m.heading, &m.altitude})
-    if (v->size() != m.size()) return true;
-  return false;
-}
-
 }  // namespace gesmi

@@ -1,12 +1,9 @@
 #pragma once
 // A mission's measurements as flat arrays on one time grid (structure of arrays).
-// Built and validated by io/ (and by the simulator); solver/ only reads it, but for
-// the readings a solve or the smoother may release when its caller gives them up
-// (MissionReadings and readings_released() below).
+// Built and validated by io/ (and by the simulator); solver/ only reads it.
 //
 // Invariants (checked by io/ before a Mission reaches the solver):
-//  - nav arrays all have the length of `time`, which is strictly increasing (but the
-//    released ones, empty);
+//  - nav arrays all have the length of `time`, which is strictly increasing;
 //  - every value is finite; marks lie within [time.front(), time.back()];
 //  - the optional half-width arrays are empty or have the length of `time`;
 //  - truth arrays are empty or complete.
@@ -155,24 +152,5 @@ struct Mission {
   std::size_t mark_count() const { return mark_time.size(); }
   bool has_truth() const { return !truth_x.empty(); }
 };
-
-/// What a computation given a mission it may change does with the mission's readings:
-/// keeps them, or empties those it no longer reads once it has used them, so that the
-/// rest of it does not hold them (the peak memory of a caller done with them, such as
-/// the gesmi command). Which ones: solve_mission() and kalman_smooth() each say.
-enum class MissionReadings {
-  kept,
-  released_after_use,
-};
-
-/// The readings a solve releases when its caller gives them up (solve_mission(),
-/// solver/solve/solve_mission.h): vx, vy, vz, depth and their per-sample half-widths.
-std::array<std::vector<double>*, 8> released_readings(Mission& mission);
-/// Whether the mission lacks some navigation readings (released by a solve or the
-/// smoother, and not put back).
-bool readings_released(const Mission& mission);
-/// Throws std::logic_error naming `caller` when readings_released(mission): for code
-/// that reads every navigation reading and cannot work without them.
-void require_readings(const Mission& mission, const char* caller);
 
 }  // namespace gesmi

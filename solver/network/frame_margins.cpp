@@ -47,7 +47,6 @@ double frame_widening(double turn, double scale, double other, double own) {
 }
 
 double speed_bound(const Mission& m) {
-  require_readings(m, "speed_bound");
   // The DVL boxes of SensorBoxes::velocity(), in plain doubles: every term is
   // non-negative, so the roundings to nearest of the few operations per sample (15 at
   // most) are covered by a relative 16 units in the last place, taken at the end, and
@@ -85,7 +84,7 @@ double speed_bound(const Mission& m) {
 
 SensorPriors frameless_sensor_priors(const Mission& mission, const SensorModel& model, const StepRegimes& regimes) {
   const FrameMargins none{};
-  const SensorBoxes boxes(mission, model, none, nullptr, &regimes);
+  const SensorBoxes boxes(mission, model, none, &regimes);
   const std::size_t n = mission.size();
   SensorPriors priors;
   priors.depth.resize(n);

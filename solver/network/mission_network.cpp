@@ -74,12 +74,12 @@ std::vector<PositionFix> gps_fixes(const Mission& m) {
 }
 
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes) {
-  return build_network(mission, model, fixes, zone_frame(mission), nullptr, classify_steps(mission, model));
+  return build_network(mission, model, fixes, zone_frame(mission), classify_steps(mission, model));
 }
 
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
-                             const FrameMargins& frame, const DvlExcerpt* dvl, const StepRegimes& regimes) {
-  const SensorBoxes boxes(mission, model, frame, dvl, &regimes);
+                             const FrameMargins& frame, const StepRegimes& regimes) {
+  const SensorBoxes boxes(mission, model, frame, &regimes);
   MissionNetwork net;
   net.time = mission.time;
   net.mine_count = mission.mine_count;

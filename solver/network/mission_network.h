@@ -46,12 +46,11 @@ struct MissionNetwork {
 /// mines (seed 001 VI-4); mine_count must exceed every mine number and be <= kMaxMines.
 /// The detections (heading, DVL boxes and horizontal slack) and the offsets between
 /// samples take the mission's zone-wide frame margins, or `frame`'s per-sample ones.
-/// With `dvl`, the offsets read the DVL from it: the mission may have released its
-/// readings (DvlExcerpt, over the marks' and fixes' times). The offsets take each step's
-/// regime (`regimes`; the first form classifies the steps itself).
+/// The offsets take each step's regime (`regimes`; the first form classifies the steps
+/// itself).
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes);
 MissionNetwork build_network(const Mission& mission, const SensorModel& model, std::span<const PositionFix> fixes,
-                             const FrameMargins& frame, const DvlExcerpt* dvl, const StepRegimes& regimes);
+                             const FrameMargins& frame, const StepRegimes& regimes);
 /// The mines each of the first `rows` marks may belong to (bit i: mine i) in a network
 /// of those marks alone: the allowed sets build_network() gives their detections.
 std::vector<std::uint64_t> allowed_mines_of_marks(const Mission& mission, std::size_t rows);

@@ -32,24 +32,23 @@ Vec3I SensorBoxes::velocity(std::size_t k) const {
   // the box's largest |vx| + |vy| + |vz| on every component, since the frame's
   // distortion turns a velocity's error off its own axis (docs/model.md, "The local
   // frame's scale").
-  const DvlSample s = dvl_ ? dvl_->at(k) : DvlSample::of(m_, k);
-  double own[3], largest = 0.0;
+  const std::vector<double>* readings[3] = {&m_.vx, &m_.vy, &m_.vz};
+  const std::vector<double>* widths[3] = {&m_.half_widths.vx, &m_.half_widths.vy, &m_.half_widths.vz};
+  double reading[3], own[3], largest = 0.0;
   for (int i = 0; i < 3; ++i) {
-    const double v = std::fabs(s.reading[i]);
-    own[i] = s.given[i] ? s.half_width[i] : dvl_bound(model_, v);
+    reading[i] = (*readings[i])[k];
+    const double v = std::fabs(reading[i]);
+    own[i] = widths[i]->empty() ? dvl_bound(model_, v) : (*widths[i])[k];
     largest = add_up(largest, add_up(v, own[i]));
   }
   const double frame = mul_up(frame_scale(k), largest);
-  return Vec3I(Interval::around(s.reading[0], add_up(own[0], frame)),
-               Interval::around(s.reading[1], add_up(own[1], frame)),
-               Interval::around(s.reading[2], add_up(own[2], frame)));
+  return Vec3I(Interval::around(reading[0], add_up(own[0], frame)), Interval::around(reading[1], add_up(own[1], frame)),
+               Interval::around(reading[2], add_up(own[2], frame)));
 }
 
 double SensorBoxes::frame_scale(std::size_t k) const { return add_up(m_.depth_scale_margin, frame_.scale.at(k)); }
 
 Interval SensorBoxes::depth(std::size_t k) const {
-  if (k >= m_.depth.size())
-    throw std::logic_error("sample " + std::to_string(k) + " has no depth reading (released by a solve or the smoother? MissionReadings)");
   const double bound = depth_bound(model_, m_.depth[k]);
   return reading(m_.depth, m_.half_widths.depth, k, bound);
 }

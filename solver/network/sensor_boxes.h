@@ -12,7 +12,6 @@
 #include "solver/interval/box.h"
 #include "solver/mission/mission.h"
 #include "solver/model/euler.h"
-#include "solver/network/dvl_excerpt.h"
 #include "solver/network/frame_margins.h"
 #include "solver/network/step_regimes.h"
 
@@ -29,14 +28,13 @@ class SensorBoxes {
   /// The mission must outlive this object (it reads the mission's arrays), and so must
   /// the frame's per-sample margins. The heading boxes grow by the frame's heading
   /// margin and the DVL boxes by its scale (the mission's zone-wide ones by default).
-  /// With `dvl`, the DVL readings come from it (which must outlive this object), not
-  /// from the mission, which may have released them (DvlExcerpt). With `regimes` (which
+  /// With `regimes` (which
   /// must outlive this object), each step takes its regime's bounds (step_regimes.h);
   /// without, every step is submerged and unchecked.
   SensorBoxes(const Mission& mission, const SensorModel& model) : SensorBoxes(mission, model, zone_frame(mission)) {}
   SensorBoxes(const Mission& mission, const SensorModel& model, const FrameMargins& frame,
-              const DvlExcerpt* dvl = nullptr, const StepRegimes* regimes = nullptr)
-      : m_(mission), model_(model), frame_(frame), dvl_(dvl), regimes_(regimes ? regimes : &kSubmerged) {}
+              const StepRegimes* regimes = nullptr)
+      : m_(mission), model_(model), frame_(frame), regimes_(regimes ? regimes : &kSubmerged) {}
 
   Interval roll(std::size_t k) const;
   Interval pitch(std::size_t k) const;
@@ -122,7 +120,6 @@ class SensorBoxes {
   const Mission& m_;
   SensorModel model_;
   FrameMargins frame_;
-  const DvlExcerpt* dvl_;
   const StepRegimes* regimes_;
 };
 

@@ -103,7 +103,6 @@ double StepRegimes::largest_speed(const SensorModel& model) const {
 }
 
 StepRegimes classify_steps(const Mission& mission, const SensorModel& model) {
-  require_readings(mission, "classify_steps");
   if (mission.size() < 2) return StepRegimes(std::vector<std::uint8_t>(mission.size() > 0 ? mission.size() - 1 : 0, 0));
   // The barometer's boxes alone give regimes that hold whatever the robot did (the
   // surface bounds are the wider ones); the depth chain under them narrows the depths,

@@ -23,7 +23,7 @@ struct TimeLocation {
   /// t must lie within [time.front(), time.back()].
   static TimeLocation locate(std::span<const double> time, double t, const SensorBoxes& boxes);
   /// The first sample at or after t: t's own sample on the grid, else the end of t's
-  /// step. locate() reads the boxes of that sample and of the one before (DvlExcerpt).
+  /// step. locate() reads the boxes of that sample and of the one before.
   static std::size_t sample_at_or_after(std::span<const double> time, double t);
 
   /// The position domain at this time.

@@ -35,9 +35,6 @@ struct SolveReport {
   /// Cold inconsistent solves: the single marks or fixes whose removal restores
   /// consistency (empty: none does); absent when no diagnosis ran.
   std::optional<std::vector<ConstraintRef>> explained_by;
-  /// Set when a diagnosis is due but the solve had released the readings it needs
-  /// (MissionReadings::released_after_use): diagnose_inconsistency() completes it.
-  bool diagnosis_pending = false;
   /// Outlier modes: q* and the hypotheses at q* (the removed marks and fixes).
   int minimal_outliers = 0;
   std::vector<std::vector<ConstraintRef>> hypotheses;

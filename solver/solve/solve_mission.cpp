@@ -48,39 +48,21 @@ std::vector<ConstraintRef> diagnose(const MissionNetwork& net, const TubeDomains
 
 // What every mode reads besides the mission: its GPS fixes, its steps' regimes and the
 // readings' check (step_regimes.h), and the speed bound the frame's margins take
-// (frame_margins.h; the largest of the DVL's and the regimes'). When the caller
-// gave up the DVL and depth readings (MissionReadings): the mission to release them
-// from, and the DVL samples the networks still read (at the fixes' and marks' times).
+// (frame_margins.h; the largest of the DVL's and the regimes').
 struct SolveInputs {
   std::vector<PositionFix> fixes;
   StepRegimes regimes;
   double max_speed = 0.0;
-  Mission* releasable = nullptr;
-  std::optional<DvlExcerpt> dvl;
 };
 
-SolveInputs solve_inputs(const Mission& mission, Mission* releasable) {
-  SolveInputs in{gps_fixes(mission), classify_steps(mission, mission.model), 0.0, releasable, {}};
+SolveInputs solve_inputs(const Mission& mission) {
+  SolveInputs in{gps_fixes(mission), classify_steps(mission, mission.model), 0.0};
   if (has_frame_margins(mission)) in.max_speed = std::max(speed_bound(mission), in.regimes.largest_speed(mission.model));
-  if (releasable) {
-    std::vector<double> times = mission.mark_time;
-    for (const PositionFix& fix : in.fixes) times.push_back(fix.time);
-    in.dvl.emplace(mission, times);
-  }
   return in;
 }
 
 MissionNetwork network_in(const Mission& mission, const SolveInputs& in, const FrameMargins& frame) {
-  return build_network(mission, mission.model, in.fixes, frame, in.dvl ? &*in.dvl : nullptr, in.regimes);
-}
-
-// Empties the readings that only the sensor enclosures read (and speed_bound(), done
-// before; the networks read the DVL excerpt), once they are built, if the caller gave
-// them up (`releasable`, the mission being solved, else null).
-void release_sensor_readings(Mission* releasable) {
-  if (!releasable) return;
-  for (std::vector<double>* v : released_readings(*releasable))
-    std::vector<double>().swap(*v);  // (clear() would keep the memory)
+  return build_network(mission, mission.model, in.fixes, frame, in.regimes);
 }
 
 // Builds the network and the sensor domains under a frame, the time counted as "build".
@@ -100,7 +82,6 @@ Pass build_pass(const Mission& mission, const SolveInputs& in, const SensorPrior
 SensorPriors build_priors(const Mission& mission, const SolveInputs& in, MissionSolution& s) {
   const auto start = Clock::now();
   SensorPriors priors = frameless_sensor_priors(mission, mission.model, in.regimes);
-  release_sensor_readings(in.releasable);
   s.timings_ms["build"] += elapsed_ms(start);
   return priors;
 }
@@ -108,7 +89,7 @@ SensorPriors build_priors(const Mission& mission, const SolveInputs& in, Mission
 // The diagnosis of an inconsistent cold solve: which single mark or fix is wrong.
 // Margins from the fixes, or over a tube that trusted every datum, would presume the
 // answer, so it takes the zone's (sound whichever datum is wrong); and the priors are
-// built again (a first pass took their vertical part, a second released them).
+// built again (the passes took their vertical part, and dropped them).
 void diagnose_cold(const Mission& mission, const std::vector<PositionFix>& fixes, const SolverOptions& options,
                    MissionSolution& s) {
   const auto start = Clock::now();
@@ -116,7 +97,7 @@ void diagnose_cold(const Mission& mission, const std::vector<PositionFix>& fixes
   const SensorPriors priors = frameless_sensor_priors(mission, mission.model, regimes);
   const FrameMargins zone = zone_frame(mission);
   s.report.explained_by =
-      diagnose(build_network(mission, mission.model, fixes, zone, nullptr, regimes), sensor_domains_in(priors, zone), options);
+      diagnose(build_network(mission, mission.model, fixes, zone, regimes), sensor_domains_in(priors, zone), options);
   s.timings_ms["diagnose"] = elapsed_ms(start);
 }
 
@@ -181,10 +162,7 @@ void solve_cold(const Mission& mission, const SolveInputs& in, const SolveOption
   }
   if (s.report.consistent || !options.diagnose) return;
   priors = {};
-  if (in.releasable)
-    s.report.diagnosis_pending = true;  // (its readings are gone: diagnose_inconsistency())
-  else
-    diagnose_cold(mission, in.fixes, options.propagation, s);
+  diagnose_cold(mission, in.fixes, options.propagation, s);
 }
 
 void solve_outliers(const Mission& mission, const SolveInputs& in, const SolveOptions& options, MissionSolution& s,
@@ -249,9 +227,8 @@ void solve_warm(const Mission& mission, const SolveInputs& in, const SolveOption
     return;
   }
   // Only now: a fallback to a cold solve builds the sensor enclosures; a warm rerun none.
-  // Released before the earlier domains are copied (at 10^7 steps the rerun's peak), with
-  // the times of an earlier result given up (compared above, not read again).
-  release_sensor_readings(in.releasable);
+  // The times of an earlier result given up (compared above, not read again) are freed
+  // before the earlier domains are copied (at 10^7 steps the rerun's peak).
   if (spent) std::vector<double>().swap(spent->time);
   detail::WarmDomains warm = detail::warm_domains(net, previous, spent);
   s.report.mode = SolveMode::warm;
@@ -273,12 +250,8 @@ std::string wording(const SolveReport& report, const SolveOptions& options, cons
   return text;
 }
 
-// Every mode's solve; `releasable`: see MissionReadings; `spent`: see solve_warm.
-MissionSolution solve_in_mode(const Mission& mission, const SolveOptions& options, Mission* releasable,
-                              MissionSolution* spent) {
-  // The smoother releases more than a solve does (the attitude and altitude too).
-  if (readings_released(mission))
-    throw std::invalid_argument("solve_mission: the mission's navigation readings were released (MissionReadings); put them back");
+// Every mode's solve; `spent`: see solve_warm.
+MissionSolution solve_in_mode(const Mission& mission, const SolveOptions& options, MissionSolution* spent) {
   MissionSolution s;
   s.mark_time = mission.mark_time;
   s.mark_range = mission.mark_range;
@@ -294,7 +267,7 @@ MissionSolution solve_in_mode(const Mission& mission, const SolveOptions& option
   };
   stage("sensor enclosures", -1.0);
   auto start = Clock::now();
-  const SolveInputs in = solve_inputs(mission, releasable);
+  const SolveInputs in = solve_inputs(mission);
   s.report.regimes = in.regimes.report();
   MissionNetwork net;
   s.timings_ms["build"] = elapsed_ms(start);
@@ -353,31 +326,12 @@ std::string SolveOptions::validate() const {
 }
 
 MissionSolution solve_mission(const Mission& mission, const SolveOptions& options) {
-  return solve_in_mode(mission, options, nullptr, nullptr);
+  return solve_in_mode(mission, options, nullptr);
 }
 
-MissionSolution solve_mission(Mission& mission, const SolveOptions& options, MissionReadings readings) {
-  return solve_in_mode(mission, options, readings == MissionReadings::released_after_use ? &mission : nullptr, nullptr);
-}
-
-MissionSolution solve_mission(Mission& mission, SolveOptions options, MissionReadings readings,
-                              MissionSolution&& previous) {
+MissionSolution solve_mission(const Mission& mission, SolveOptions options, MissionSolution&& previous) {
   options.warm_from = &previous;
-  return solve_in_mode(mission, options, readings == MissionReadings::released_after_use ? &mission : nullptr,
-                       &previous);
-}
-
-void diagnose_inconsistency(const Mission& mission, const SolveOptions& options, MissionSolution& s) {
-  if (!s.report.diagnosis_pending) return;
-  if (readings_released(mission))
-    throw std::invalid_argument("diagnose_inconsistency: the mission's navigation readings were released (MissionReadings); put them back");
-  if (mission.time != s.time || mission.mark_time != s.mark_time || mission.mark_range != s.mark_range ||
-      mission.mark_mine != s.mark_mine || mission.mark_side != s.mark_side || mission.mine_count != s.mine_count ||
-      !same_sensor_model(mission.model, s.model))
-    throw std::invalid_argument("diagnose_inconsistency: not the mission solved (its grid, marks or bounds differ)");
-  diagnose_cold(mission, gps_fixes(mission), options.propagation, s);
-  s.report.diagnosis_pending = false;
-  s.report.message += describe_diagnosis(*s.report.explained_by);
+  return solve_in_mode(mission, options, &previous);
 }
 
 }  // namespace gesmi

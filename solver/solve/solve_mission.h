@@ -44,26 +44,11 @@ struct SolveOptions {
 
 MissionSolution solve_mission(const Mission& mission, const SolveOptions& options = {});
 
-/// MissionReadings::released_after_use (mission.h): the DVL and depth readings and
-/// their per-sample half-widths (released_readings(), 32 bytes a step, 64 with
-/// half-widths) are emptied once the sensor enclosures are built, so that the passes do
-/// not hold them; the networks keep the few DVL samples they read (DvlExcerpt). A cold
-/// inconsistent solve is then not diagnosed (report.diagnosis_pending): the caller puts
-/// the readings back (read again) and calls diagnose_inconsistency().
-MissionSolution solve_mission(Mission& mission, const SolveOptions& options, MissionReadings readings);
-
 /// A warm rerun from `previous`, which the caller gives up (options.warm_from is
 /// replaced by it): its increments are moved into the new solution instead of copied (at
-/// 10^7 steps 480 MB less memory and one copy less; docs/performance.md, "A warm rerun
-/// takes the earlier increments"). The result is the same as with options.warm_from =
-/// &previous. `previous` is left valid but unspecified.
-MissionSolution solve_mission(Mission& mission, SolveOptions options, MissionReadings readings,
-                              MissionSolution&& previous);
-/// The diagnosis of a solve left pending (report.diagnosis_pending): the single marks
-/// or fixes whose removal restores consistency, added to the report and its message as
-/// solve_mission(const Mission&) gives them. `mission` is the one solved, its readings
-/// put back (std::invalid_argument otherwise, or when its marks or bounds differ).
-void diagnose_inconsistency(const Mission& mission, const SolveOptions& options, MissionSolution& s);
+/// 10^7 steps 480 MB less memory and one copy less). The result is the same as with
+/// options.warm_from = &previous. `previous` is left valid but unspecified.
+MissionSolution solve_mission(const Mission& mission, SolveOptions options, MissionSolution&& previous);
 
 /// Why `previous` cannot warm-start a solve of `mission` (another grid, other mines,
 /// an inconsistent result, a mark table that changed other than by added rows), or

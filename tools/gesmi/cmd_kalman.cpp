@@ -87,8 +87,7 @@ int run_kalman(std::span<const std::string> args) {
   start = Clock::now();
   progress.update(-1.0, "smoothing (linearisations until no coordinate moves more than " + io::format_number(o.tolerance) +
                             " m)");
-  // The readings only the dead reckoning reads are released after it (its peak memory).
-  file.result = kalman_smooth(mission, mission.model, gps_fixes(mission), o, MissionReadings::released_after_use);
+  file.result = kalman_smooth(mission, mission.model, gps_fixes(mission), o);
   file.timings_ms["smooth"] = elapsed_ms(start);
   start = Clock::now();
   // The true positions only count, block by block: not kept (240 MB at 10^7 steps).

@@ -32,19 +32,6 @@ using Clock = std::chrono::steady_clock;
 
 double elapsed_ms(Clock::time_point since) { return std::chrono::duration<double, std::milli>(Clock::now() - since).count(); }
 
-// The readings a solve released (MissionReadings), read again from the file into the
-// mission solved, whose marks, bounds and configuration stay as they were: refused if
-// the file's navigation is no longer the one solved.
-void put_back_released_readings(Mission& mission, const std::string& path, const po::variables_map& v,
-                                const std::string& navigation) {
-  Mission again = io::read_mission(path, io::TruthReading::skip);
-  apply_mine_count(v, again);  // (the navigation digest covers the mine count)
-  if (io::navigation_digest(again, io::kResultDigest) != navigation)
-    throw io::FormatError(path + ": changed while gesmi solve ran; solve it again");
-  const auto from = released_readings(again), to = released_readings(mission);
-  for (std::size_t i = 0; i < to.size(); ++i) *to[i] = std::move(*from[i]);
-}
-
 int run_solve(std::span<const std::string> args) {
   po::variables_map v;
   if (!parse_options(args, solve_options(), po::positional_options_description().add("mission", 1), v, kSolveUsage))
@@ -89,19 +76,8 @@ int run_solve(std::span<const std::string> args) {
   };
   options.on_stage = [&](const char* stage, double fraction) { progress.update(fraction, stage); };
   io::SolveResult result;
-  // Once the sensor enclosures are built, the solve reads the DVL and depth readings
-  // only at the marks and fixes (kept aside): released then (its peak memory), and read
-  // again only to diagnose an inconsistency.
   // A warm rerun gives the earlier result up: its increments move into the new one.
-  result.solution = previous ? solve_mission(mission, options, MissionReadings::released_after_use, std::move(*previous))
-                             : solve_mission(mission, options, MissionReadings::released_after_use);
-  if (result.solution.report.diagnosis_pending) {
-    progress.update(-1.0, "reading " + mission_path + " again to diagnose the inconsistency");
-    start = Clock::now();
-    put_back_released_readings(mission, mission_path, v, navigation);
-    timings["load"] += elapsed_ms(start);
-    diagnose_inconsistency(mission, options, result.solution);
-  }
+  result.solution = previous ? solve_mission(mission, options, std::move(*previous)) : solve_mission(mission, options);
   // The earlier result is done with (its tube and waterfall went into the solve): not
   // held in memory while the new one is written (the peak of a warm rerun).
   previous.reset();
