@@ -61,10 +61,10 @@ std::optional<KalmanStart> kalman_start_from_name(std::string_view name) {
 }
 
 std::string KalmanOptions::validate() const {
-  if (!(noise_factor > 0.0) || !std::isfinite(noise_factor)) return "the noise factor must be a positive number";
-  if (max_iterations < 1 || max_iterations > 100) return "the iteration cap must be between 1 and 100";
-  if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) return "the tolerance must be a finite number >= 0";
-  if (!(stall_fraction >= 0.0 && stall_fraction < 1.0)) return "the stall fraction must be a number in [0, 1)";
+  if (!(noise_factor > 0.0) || !std::isfinite(noise_factor)) return "noise-factor: must be a positive number";
+  if (max_iterations < 1 || max_iterations > 100) return "max-iterations: must be between 1 and 100";
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) return "tolerance: must be a finite number >= 0";
+  if (!(stall_fraction >= 0.0 && stall_fraction < 1.0)) return "stall-fraction: must be a number in [0, 1)";
   return {};
 }
 

@@ -69,6 +69,8 @@ struct KalmanOptions {
   double stall_fraction = 0.01;
   bool biases = false;  // the bias-aware variant
   KalmanStart start = KalmanStart::coarse;
+  /// Empty when usable; otherwise the reason, starting with the option it is about as
+  /// the gesmi command spells it ("max-iterations: must be ...").
   std::string validate() const;
 };
 

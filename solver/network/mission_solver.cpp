@@ -8,8 +8,8 @@
 namespace gesmi {
 
 std::string SolverOptions::validate() const {
-  if (max_sweeps < 1) return "the sweep limit must be at least 1";
-  if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) return "the tolerance must be a finite number >= 0";
+  if (max_sweeps < 1 || max_sweeps > kMaxSweeps) return "max-sweeps: must be between 1 and " + std::to_string(kMaxSweeps);
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) return "tolerance: must be a finite number >= 0";
   return {};
 }
 

@@ -19,11 +19,13 @@
 namespace gesmi {
 
 struct SolverOptions {
+  static constexpr int kMaxSweeps = 1000000;
   int max_sweeps = 100;
   double tolerance = 1e-3;  // m: largest move of a bound that still counts as progress
   /// Called after each sweep with the sweep number and the largest bound move (m).
   std::function<void(int sweep, double largest_move)> on_sweep;
-  /// Empty when usable; otherwise the reason.
+  /// Empty when usable; otherwise the reason, starting with the option it is about as
+  /// the gesmi command spells it ("max-sweeps: must be ...").
   std::string validate() const;
 };
 

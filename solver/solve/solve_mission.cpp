@@ -319,9 +319,10 @@ const char* solve_mode_name(SolveMode mode) {
 
 std::string SolveOptions::validate() const {
   if (const std::string why = propagation.validate(); !why.empty()) return why;
-  if (max_outliers > 8) return "at most 8 outliers can be tolerated";
-  if (warm_from && max_outliers >= 0) return "a warm rerun cannot also tolerate outliers";
-  if (trust_gps && max_outliers < 0) return "trusting the GPS fixes only means something when tolerating outliers";
+  if (max_outliers < -1 || max_outliers > 8)
+    return std::string(outlier_mode == OutlierMode::minimal ? "minimal-outliers" : "max-outliers") + ": must be between 0 and 8";
+  if (warm_from && max_outliers >= 0) return "from and --max-outliers cannot be combined";
+  if (trust_gps && max_outliers < 0) return "trust-gps goes with --max-outliers or --minimal-outliers";
   return {};
 }
 

@@ -1,9 +1,11 @@
 #include "tools/gesmi/cli_args.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <vector>
 
 #include "io/text/message_text.h"
@@ -38,6 +40,11 @@ long long parse_integer(std::string_view option, const std::string& text) {
   if (text.empty() || end != begin + text.size() || errno == ERANGE)
     throw UsageError(std::string(option) + ": expected an integer, got " + io::quoted_input(text));
   return value;
+}
+
+int parse_int(std::string_view option, const std::string& text) {
+  const long long value = parse_integer(option, text);
+  return static_cast<int>(std::clamp<long long>(value, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
 }
 
 bool parse_options(std::span<const std::string> args, const po::options_description& options,

@@ -17,6 +17,9 @@ double parse_double(std::string_view option, const std::string& text);
 double parse_non_negative(std::string_view option, const std::string& text);
 /// Parses a whole string as an integer.
 long long parse_integer(std::string_view option, const std::string& text);
+/// The same, clamped to int's range: for options whose validate() bounds them well within
+/// it, and then names the option with its bounds.
+int parse_int(std::string_view option, const std::string& text);
 
 /// Parses args against options (and positional names, in order). Unknown options,
 /// missing values and extra arguments become UsageError. Returns false when --help

@@ -55,19 +55,15 @@ int run_kalman(std::span<const std::string> args) {
     return kExitOk;
   KalmanOptions o;
   o.noise_factor = parse_double("--noise-factor", v["noise-factor"].as<std::string>());
-  const long long cap = parse_integer("--max-iterations", v["max-iterations"].as<std::string>());
-  if (cap < 1 || cap > 100) throw UsageError("--max-iterations: must be between 1 and 100");
-  o.max_iterations = static_cast<int>(cap);
-  o.tolerance = parse_non_negative("--tolerance", v["tolerance"].as<std::string>());
-  if (!std::isfinite(o.tolerance)) throw UsageError("--tolerance: must be finite");
-  o.stall_fraction = parse_non_negative("--stall-fraction", v["stall-fraction"].as<std::string>());
-  if (!(o.stall_fraction < 1.0)) throw UsageError("--stall-fraction: must be below 1");
+  o.max_iterations = parse_int("--max-iterations", v["max-iterations"].as<std::string>());
+  o.tolerance = parse_double("--tolerance", v["tolerance"].as<std::string>());
+  o.stall_fraction = parse_double("--stall-fraction", v["stall-fraction"].as<std::string>());
   o.biases = v["biases"].as<bool>();
   const auto chosen_start = kalman_start_from_name(v["start"].as<std::string>());
   if (!chosen_start)
     throw UsageError("--start: expected coarse or dead-reckoning, got " + io::quoted_input(v["start"].as<std::string>()));
   o.start = *chosen_start;
-  if (const std::string why = o.validate(); !why.empty()) throw UsageError("--noise-factor: " + why);
+  if (const std::string why = o.validate(); !why.empty()) throw UsageError("--" + why);
   const std::string output = v["output"].as<std::string>();
   const auto file_options = {"mission", "config"};  // the options naming files read
   io::OutputSet outputs(input_files(v, file_options));

@@ -40,22 +40,21 @@ po::options_description solve_options() {
 
 SolveOptions parse_solve_options(const po::variables_map& v) {
   SolveOptions o;
-  const long long sweeps = parse_integer("--max-sweeps", v["max-sweeps"].as<std::string>());
-  if (sweeps < 1 || sweeps > 1000000) throw UsageError("--max-sweeps: must be between 1 and 1000000");
-  o.propagation.max_sweeps = static_cast<int>(sweeps);
-  o.propagation.tolerance = parse_non_negative("--tolerance", v["tolerance"].as<std::string>());
-  if (!std::isfinite(o.propagation.tolerance)) throw UsageError("--tolerance: must be finite");
+  o.propagation.max_sweeps = parse_int("--max-sweeps", v["max-sweeps"].as<std::string>());
+  o.propagation.tolerance = parse_double("--tolerance", v["tolerance"].as<std::string>());
   for (const std::string name : {"max-outliers", "minimal-outliers"}) {
     if (!v.count(name)) continue;
-    if (o.max_outliers >= 0) throw UsageError("--max-outliers and --minimal-outliers cannot be combined");
-    const long long q = parse_integer("--" + name, v[name].as<std::string>());
-    if (q < 0 || q > 8) throw UsageError("--" + name + ": must be between 0 and 8");
-    o.max_outliers = static_cast<int>(q);
+    if (v.count("max-outliers") && v.count("minimal-outliers"))
+      throw UsageError("--max-outliers and --minimal-outliers cannot be combined");
+    // (a negative count would mean "none": kept negative but for -1, which validate() refuses)
+    const int q = parse_int("--" + name, v[name].as<std::string>());
+    o.max_outliers = q < 0 ? -2 : q;
     o.outlier_mode = name == "max-outliers" ? OutlierMode::relaxed : OutlierMode::minimal;
   }
   o.trust_gps = v.count("trust-gps") > 0;
-  if (o.trust_gps && o.max_outliers < 0) throw UsageError("--trust-gps goes with --max-outliers or --minimal-outliers");
+  // The warm rerun's earlier result is read later: its option stands for it here.
   if (v.count("from") && o.max_outliers >= 0) throw UsageError("--from and --max-outliers cannot be combined");
+  if (const std::string why = o.validate(); !why.empty()) throw UsageError("--" + why);
   return o;
 }
 

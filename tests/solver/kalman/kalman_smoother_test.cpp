@@ -220,21 +220,25 @@ TEST(KalmanSmoother, DoesNotStopAnIterationThatIsStillConvergingSlowly) {
   EXPECT_LE(r.last_step_sigmas, o.stall_fraction);  // the sigma test alone would have stopped it
 }
 
+// Each reason starts with the option it is about, as the gesmi command spells it.
 TEST(KalmanSmoother, ValidatesItsOptions) {
+  const auto starts_with = [](const std::string& why, const char* option) { return why.rfind(option, 0) == 0; };
   KalmanOptions o;
   EXPECT_TRUE(o.validate().empty());
   o.noise_factor = 0.0;
-  EXPECT_FALSE(o.validate().empty());
+  EXPECT_TRUE(starts_with(o.validate(), "noise-factor: ")) << o.validate();
   o.noise_factor = 1.0;
-  o.max_iterations = 0;
-  EXPECT_FALSE(o.validate().empty());
+  for (const int bad : {0, 101}) {
+    o.max_iterations = bad;
+    EXPECT_TRUE(starts_with(o.validate(), "max-iterations: ")) << o.validate();
+  }
   o.max_iterations = 20;
   o.tolerance = -1.0;
-  EXPECT_FALSE(o.validate().empty());
+  EXPECT_TRUE(starts_with(o.validate(), "tolerance: ")) << o.validate();
   o.tolerance = 1e-3;
   for (const double bad : {-0.1, 1.0, std::nan("")}) {
     o.stall_fraction = bad;
-    EXPECT_FALSE(o.validate().empty()) << bad;
+    EXPECT_TRUE(starts_with(o.validate(), "stall-fraction: ")) << bad;
   }
 }
 

@@ -83,14 +83,18 @@ TEST(MissionSolver, ReportsAnUnreachableGpsFix) {
   EXPECT_NE(s.report.message.find("GPS fix 0"), std::string::npos) << s.report.message;
 }
 
+// Each reason starts with the option it is about, as the gesmi command spells it.
 TEST(MissionSolver, ValidatesItsOptions) {
   SolverOptions o;
   EXPECT_TRUE(o.validate().empty());
-  o.max_sweeps = 0;
-  EXPECT_FALSE(o.validate().empty());
-  o.max_sweeps = 3;
+  for (const int bad : {0, SolverOptions::kMaxSweeps + 1}) {
+    o.max_sweeps = bad;
+    EXPECT_EQ(o.validate().rfind("max-sweeps: ", 0), 0u) << o.validate();
+  }
+  o.max_sweeps = SolverOptions::kMaxSweeps;
+  EXPECT_TRUE(o.validate().empty());
   o.tolerance = -1.0;
-  EXPECT_FALSE(o.validate().empty());
+  EXPECT_EQ(o.validate().rfind("tolerance: ", 0), 0u) << o.validate();
 }
 
 }  // namespace
