@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "io/output/atomic_output.h"
 #include "io/imports/csv_number.h"
@@ -320,6 +321,214 @@ void read_waterfall_cells(const H5File& f, std::size_t n, std::size_t k, Waterfa
   w.upper = std::move(upper);
 }
 
+// A root attribute the file must have.
+std::string required_text(const H5File& f, const char* name) {
+  const auto v = f.string_attribute("/", name);
+  if (!v) bad(f, "/", std::string("missing attribute ") + name);
+  return *v;
+}
+
+std::int64_t required_integer(const H5File& f, const char* name, std::int64_t lowest, std::int64_t highest) {
+  const auto v = f.int_attribute("/", name);
+  if (!v) bad(f, "/", std::string("missing attribute ") + name);
+  if (*v < lowest || *v > highest)
+    bad(f, "/", std::string("attribute ") + name + " must be between " + std::to_string(lowest) + " and " +
+                    std::to_string(highest) + ", found " + std::to_string(*v));
+  return *v;
+}
+
+double required_degrees(const H5File& f, const char* name, double limit) {
+  const auto v = f.double_attribute("/", name);
+  if (!v) bad(f, "/", std::string("missing attribute ") + name);
+  if (!(std::abs(*v) <= limit)) bad(f, "/", std::string("attribute ") + name + " must be within +-" + format_number(limit) + " degrees");
+  return *v;
+}
+
+// The solve's report and the result's counts and version, from the root attributes;
+// returns the mark count.
+std::int64_t read_report_attributes(const H5File& f, SolveResult& r) {
+  MissionSolution& s = r.solution;
+  const std::string status = required_text(f, "status");
+  if (status != "consistent" && status != "inconsistent") bad(f, "/", "attribute status must be consistent or inconsistent");
+  s.report.consistent = status == "consistent";
+  s.report.message = required_text(f, "inconsistency");
+  s.report.sweeps = static_cast<int>(required_integer(f, "sweeps", 0, std::numeric_limits<std::int32_t>::max()));
+  s.report.converged = required_integer(f, "converged", 0, 1) != 0;
+  s.report.minimal_outliers =
+      static_cast<int>(required_integer(f, "minimal_outliers", -1, std::numeric_limits<std::int32_t>::max()));
+  s.mine_count = static_cast<int>(required_integer(f, "mine_count", 0, kMaxMines));
+  const std::int64_t mark_count = required_integer(f, "mark_count", 0, static_cast<std::int64_t>(kMaxDatasetValues));
+  r.version = required_text(f, "gesmi_version");
+  return mark_count;
+}
+
+// The mission's epoch (when recorded) and its origin (format 5).
+void read_epoch_and_origin(const H5File& f, SolveResult& r) {
+  if (const auto epoch = f.string_attribute("/", "epoch_utc")) {
+    r.epoch = parse_epoch_utc(*epoch);
+    if (!r.epoch || r.format_version < 4)
+      bad(f, "/", "attribute epoch_utc is not a UTC time YYYY-MM-DDThh:mm:ssZ of a format-4 result");
+  }
+  if (r.format_version >= 5) {
+    r.origin = GeoOrigin{required_degrees(f, "origin_latitude", 90.0), required_degrees(f, "origin_longitude", 180.0)};
+    if (required_text(f, "datum") != kDatum) bad(f, "/", std::string("attribute datum must be ") + kDatum);
+  }
+}
+
+// What a result with digests (format 2 on) also records: the sensor model, the solve
+// mode and the input digests.
+void read_model_mode_and_inputs(const H5File& f, DigestKind verified, SolveResult& r) {
+  MissionSolution& s = r.solution;
+  s.model = read_model_attributes(f, "/model", model_keys_version(r.format_version));
+  const std::string mode = required_text(f, "mode");
+  s.report.mode = mode_named(mode);
+  if (mode != solve_mode_name(s.report.mode)) bad(f, "/", "attribute mode is not one gesmi writes");
+  const InputDigestNames inputs = input_digest_names(verified);
+  r.navigation_digest = required_text(f, inputs.navigation.c_str());
+  r.bounds_digest = required_text(f, inputs.bounds.c_str());
+  r.marks_digest = required_text(f, inputs.marks.c_str());
+}
+
+void read_timings(const H5File& f, std::map<std::string, double>& timings_ms) {
+  for (const char* name : {"load", "build", "propagate", "waterfall", "write"})
+    if (const auto ms = f.double_attribute("/", std::string("timing_") + name + "_ms")) timings_ms[name] = *ms;
+}
+
+// The sample times: at least two, finite and increasing.
+std::vector<double> read_times(const H5File& f, std::optional<DigestKind> verified) {
+  std::vector<double> time = f.read_doubles("/time", 1);
+  const std::size_t n = time.size();
+  if (verified) verify_digest(f, "/time", time, n, 1, *verified);
+  if (n < 2) bad(f, "/time", "expected at least 2 samples");
+  for (std::size_t k = 0; k < n; ++k)
+    if (!std::isfinite(time[k]) || (k > 0 && !(time[k] > time[k - 1])))
+      bad(f, "/time", "row " + std::to_string(k) + ": times must be finite and increase");
+  return time;
+}
+
+// The tube and increments of n steps, those `parts` asks for (the tube's rows handed
+// over when it says so); whether some interval was empty, as read or handed over.
+bool read_tube(const H5File& f, std::size_t n, std::optional<DigestKind> verified, const ResultParts& parts,
+               SolveResult& r) {
+  TubeDomains& d = r.solution.domains;
+  bool empty_domain = false;
+  if (parts.tube_rows) {
+    empty_domain = read_bounds_streamed(f, "/tube", n, verified, r, parts.tube_rows);
+  } else if (parts.tube) {
+    std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
+    empty_domain = read_bounds(f, "/tube", tube, n, verified);
+  }
+  if (parts.increments && parts.tube && !parts.tube_rows) {
+    std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
+    empty_domain = read_bounds(f, "/increments", increments, n - 1, verified) || empty_domain;
+  }
+  return empty_domain;
+}
+
+void read_mine_boxes(const H5File& f, std::size_t k, std::optional<DigestKind> verified, std::vector<Vec3I>& boxes) {
+  std::vector<Interval> mx, my, mz;
+  std::vector<Interval>* mines[3] = {&mx, &my, &mz};
+  read_bounds(f, "/mines", mines, k, verified);
+  for (std::size_t i = 0; i < k; ++i) boxes.emplace_back(mx[i], my[i], mz[i]);
+}
+
+// Each mark's candidate mines (marks x k flags) as bit sets.
+std::vector<std::uint64_t> read_candidates(const H5File& f, std::size_t marks, std::size_t k,
+                                           std::optional<DigestKind> verified) {
+  const H5Shape cs = f.shape("/marks/candidates");
+  if (cs.rows != marks || (cs.rows > 0 && cs.columns != k))
+    bad(f, "/marks/candidates", "expected " + std::to_string(marks) + " x " + std::to_string(k));
+  const std::vector<std::int32_t> candidates = f.read_ints("/marks/candidates");
+  if (verified) verify_digest(f, "/marks/candidates", candidates, cs.rows, cs.columns, *verified);
+  expect_flags(f, "/marks/candidates", candidates);
+  std::vector<std::uint64_t> sets(cs.rows, 0);
+  for (std::size_t j = 0; j < cs.rows; ++j)
+    for (std::size_t i = 0; i < k; ++i)
+      if (candidates[j * k + i]) sets[j] |= std::uint64_t{1} << i;
+  return sets;
+}
+
+// The marks' rows (candidates, outlier flags, times, ranges, mines, sides) and the GPS
+// fixes' outlier flags, checked.
+void read_marks_and_fixes(const H5File& f, std::size_t marks, std::optional<DigestKind> verified, MissionSolution& s) {
+  s.candidates = read_candidates(f, marks, static_cast<std::size_t>(s.mine_count), verified);
+  s.mark_outlier = f.read_ints("/marks/outlier", 1);
+  s.mark_time = f.read_doubles("/marks/time", 1);
+  s.mark_range = f.read_doubles("/marks/range", 1);
+  s.mark_mine = f.read_ints("/marks/mine", 1);
+  // Results of gesmi 0.1 kept no sides: a warm start needs them, and refuses those anyway.
+  s.mark_side = verified ? f.read_ints("/marks/side", 1) : std::vector<std::int32_t>(marks, 0);
+  if (s.mark_outlier.size() != marks || s.mark_time.size() != marks || s.mark_range.size() != marks ||
+      s.mark_mine.size() != marks || s.mark_side.size() != marks)
+    bad(f, "/marks", "expected " + std::to_string(marks) + " rows in every dataset");
+  s.gps_outlier = f.read_ints("/gps/outlier", 1);
+  if (verified) {
+    verify_digest(f, "/marks/outlier", s.mark_outlier, marks, 1, *verified);
+    verify_digest(f, "/marks/time", s.mark_time, marks, 1, *verified);
+    verify_digest(f, "/marks/range", s.mark_range, marks, 1, *verified);
+    verify_digest(f, "/marks/mine", s.mark_mine, marks, 1, *verified);
+    verify_digest(f, "/marks/side", s.mark_side, marks, 1, *verified);
+    verify_digest(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size(), 1, *verified);
+  }
+  expect_flags(f, "/marks/outlier", s.mark_outlier);
+  expect_flags(f, "/gps/outlier", s.gps_outlier);
+  for (std::size_t j = 0; j < marks; ++j) {
+    const std::string row = "row " + std::to_string(j);
+    if (!std::isfinite(s.mark_time[j])) bad(f, "/marks/time", row + ": time must be finite");
+    if (!std::isfinite(s.mark_range[j]) || s.mark_range[j] < 0.0) bad(f, "/marks/range", row + ": range must be finite and >= 0");
+    if (s.mark_mine[j] < -1 || s.mark_mine[j] >= s.mine_count)
+      bad(f, "/marks/mine", row + ": mine " + std::to_string(s.mark_mine[j]) + " is not one of the result's " +
+                                std::to_string(s.mine_count) + " mines (-1 for unknown)");
+    if (verified && s.mark_side[j] != 1 && s.mark_side[j] != -1) bad(f, "/marks/side", row + ": side must be +1 or -1");
+  }
+}
+
+// The waterfall of n steps and k mines of formats 1 and 2, checked.
+void read_dense_waterfall(const H5File& f, std::size_t n, std::size_t k, std::optional<DigestKind> verified,
+                          Waterfall& w) {
+  const H5Shape ws = f.shape("/waterfall/lower");
+  if (ws.rows != n || (k > 0 && ws.columns != k))
+    bad(f, "/waterfall/lower", "expected " + std::to_string(n) + " x " + std::to_string(k));
+  // Formats 1 and 2: a dense steps x mines table, NaN where a mine cannot appear.
+  const std::vector<double> lower = f.read_doubles("/waterfall/lower"), upper = f.read_doubles("/waterfall/upper");
+  if (upper.size() != lower.size()) bad(f, "/waterfall/upper", "shape differs from /waterfall/lower");
+  if (k == 0 && !lower.empty()) bad(f, "/waterfall/lower", "cells in a result without mines");
+  if (verified) {
+    verify_digest(f, "/waterfall/lower", lower, ws.rows, ws.columns, *verified);
+    verify_digest(f, "/waterfall/upper", upper, ws.rows, ws.columns, *verified);
+  }
+  w.steps = n;
+  w.mines = k;
+  for (std::size_t c = 0; c < lower.size(); ++c) {
+    const double lo = lower[c], hi = upper[c];
+    if (std::isnan(lo) && std::isnan(hi)) continue;
+    if (!(lo <= hi)) bad(f, "/waterfall", "cell " + std::to_string(c) + ": lower bound above upper bound");
+    w.add(c / k, c % k, lo, hi);
+  }
+}
+
+// The root digest, over the root attributes and every dataset's recorded digest.
+void verify_root_digest(const H5File& f, const SolveResult& r, DigestKind verified) {
+  const std::string kind = digest_name(verified);
+  std::vector<std::pair<std::string, std::string>> fields = root_fields(r, r.format_version);
+  for (const char* dataset : kDatasets) {
+    if (r.format_version < 3 && format_3_only(dataset)) continue;
+    const auto stored = f.string_attribute(dataset, kind);
+    if (!stored) bad(f, dataset, "has no " + kind + " attribute (edited or damaged)");
+    fields.emplace_back(dataset, *stored);
+  }
+  if (f.string_attribute("/", kind) != digest_of_fields(fields, verified))
+    bad(f, "/", "attributes or dataset digests " + differ_from_recorded(verified));
+}
+
+// A consistent result has no empty interval in its tube, increments or mine boxes.
+void check_consistent_domains(const H5File& f, bool empty_domain, const std::vector<Vec3I>& mine_boxes) {
+  if (empty_domain) bad(f, "/tube", "a consistent result with an empty domain (edited or damaged)");
+  for (const Vec3I& m : mine_boxes)
+    for (int c = 0; c < 3; ++c)
+      if (m[c].is_empty()) bad(f, "/mines", "a consistent result with an empty mine box (edited or damaged)");
+}
+
 }  // namespace
 
 void record_inputs(SolveResult& r, const Mission& mission, std::string navigation) {
@@ -412,164 +621,23 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
   // The digests to check: none in format 1.
   const std::optional<DigestKind> verified =
       r.format_version >= 2 ? std::optional(result_digest_kind(r.format_version)) : std::nullopt;
-  const std::string kind = verified ? digest_name(*verified) : "";
-  const auto text = [&](const char* name) {
-    const auto v = f.string_attribute("/", name);
-    if (!v) bad(f, "/", std::string("missing attribute ") + name);
-    return *v;
-  };
-  const auto integer = [&](const char* name, std::int64_t lowest, std::int64_t highest) {
-    const auto v = f.int_attribute("/", name);
-    if (!v) bad(f, "/", std::string("missing attribute ") + name);
-    if (*v < lowest || *v > highest)
-      bad(f, "/", std::string("attribute ") + name + " must be between " + std::to_string(lowest) + " and " +
-                      std::to_string(highest) + ", found " + std::to_string(*v));
-    return *v;
-  };
-  const std::string status = text("status");
-  if (status != "consistent" && status != "inconsistent") bad(f, "/", "attribute status must be consistent or inconsistent");
-  s.report.consistent = status == "consistent";
-  s.report.message = text("inconsistency");
-  s.report.sweeps = static_cast<int>(integer("sweeps", 0, std::numeric_limits<std::int32_t>::max()));
-  s.report.converged = integer("converged", 0, 1) != 0;
-  s.report.minimal_outliers = static_cast<int>(integer("minimal_outliers", -1, std::numeric_limits<std::int32_t>::max()));
-  s.mine_count = static_cast<int>(integer("mine_count", 0, kMaxMines));
-  const std::int64_t mark_count = integer("mark_count", 0, static_cast<std::int64_t>(kMaxDatasetValues));
-  r.version = text("gesmi_version");
-  if (const auto epoch = f.string_attribute("/", "epoch_utc")) {
-    r.epoch = parse_epoch_utc(*epoch);
-    if (!r.epoch || r.format_version < 4)
-      bad(f, "/", "attribute epoch_utc is not a UTC time YYYY-MM-DDThh:mm:ssZ of a format-4 result");
-  }
-  if (r.format_version >= 5) {
-    const auto number = [&](const char* name, double limit) {
-      const auto v = f.double_attribute("/", name);
-      if (!v) bad(f, "/", std::string("missing attribute ") + name);
-      if (!(std::abs(*v) <= limit)) bad(f, "/", std::string("attribute ") + name + " must be within +-" + format_number(limit) + " degrees");
-      return *v;
-    };
-    r.origin = GeoOrigin{number("origin_latitude", 90.0), number("origin_longitude", 180.0)};
-    if (text("datum") != kDatum) bad(f, "/", std::string("attribute datum must be ") + kDatum);
-  }
+  const auto marks = static_cast<std::size_t>(read_report_attributes(f, r));
+  read_epoch_and_origin(f, r);
   if (r.format_version >= 7) s.report.regimes = read_regimes(f);
-  if (verified) {
-    s.model = read_model_attributes(f, "/model", model_keys_version(r.format_version));
-    const std::string mode = text("mode");
-    s.report.mode = mode_named(mode);
-    if (mode != solve_mode_name(s.report.mode)) bad(f, "/", "attribute mode is not one gesmi writes");
-    const InputDigestNames inputs = input_digest_names(*verified);
-    r.navigation_digest = text(inputs.navigation.c_str());
-    r.bounds_digest = text(inputs.bounds.c_str());
-    r.marks_digest = text(inputs.marks.c_str());
-  }
-  for (const char* name : {"load", "build", "propagate", "waterfall", "write"})
-    if (const auto ms = f.double_attribute("/", std::string("timing_") + name + "_ms")) s.timings_ms[name] = *ms;
+  if (verified) read_model_mode_and_inputs(f, *verified, r);
+  read_timings(f, s.timings_ms);
 
-  s.time = f.read_doubles("/time", 1);
+  s.time = read_times(f, verified);
   const std::size_t n = s.time.size();
-  if (verified) verify_digest(f, "/time", s.time, n, 1, *verified);
-  if (n < 2) bad(f, "/time", "expected at least 2 samples");
-  for (std::size_t k = 0; k < n; ++k)
-    if (!std::isfinite(s.time[k]) || (k > 0 && !(s.time[k] > s.time[k - 1])))
-      bad(f, "/time", "row " + std::to_string(k) + ": times must be finite and increase");
-  TubeDomains& d = s.domains;
-  bool empty_domain = false;  // in the tube or the increments, as read or handed over
-  if (parts.tube_rows) {
-    empty_domain = read_bounds_streamed(f, "/tube", n, verified, r, parts.tube_rows);
-  } else if (parts.tube) {
-    std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
-    empty_domain = read_bounds(f, "/tube", tube, n, verified);
-  }
-  if (parts.increments && parts.tube && !parts.tube_rows) {
-    std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
-    empty_domain = read_bounds(f, "/increments", increments, n - 1, verified) || empty_domain;
-  }
-  std::vector<Interval> mx, my, mz;
-  std::vector<Interval>* mines[3] = {&mx, &my, &mz};
+  const bool empty_domain = read_tube(f, n, verified, parts, r);  // in the tube or the increments
   const std::size_t k = static_cast<std::size_t>(s.mine_count);
-  read_bounds(f, "/mines", mines, k, verified);
-  for (std::size_t i = 0; i < k; ++i) d.mines.emplace_back(mx[i], my[i], mz[i]);
+  read_mine_boxes(f, k, verified, s.domains.mines);
 
-  const auto marks = static_cast<std::size_t>(mark_count);
-  const H5Shape cs = f.shape("/marks/candidates");
-  if (cs.rows != marks || (cs.rows > 0 && cs.columns != k))
-    bad(f, "/marks/candidates", "expected " + std::to_string(marks) + " x " + std::to_string(k));
-  const std::vector<std::int32_t> candidates = f.read_ints("/marks/candidates");
-  if (verified) verify_digest(f, "/marks/candidates", candidates, cs.rows, cs.columns, *verified);
-  expect_flags(f, "/marks/candidates", candidates);
-  s.candidates.assign(cs.rows, 0);
-  for (std::size_t j = 0; j < cs.rows; ++j)
-    for (std::size_t i = 0; i < k; ++i)
-      if (candidates[j * k + i]) s.candidates[j] |= std::uint64_t{1} << i;
-  s.mark_outlier = f.read_ints("/marks/outlier", 1);
-  s.mark_time = f.read_doubles("/marks/time", 1);
-  s.mark_range = f.read_doubles("/marks/range", 1);
-  s.mark_mine = f.read_ints("/marks/mine", 1);
-  // Results of gesmi 0.1 kept no sides: a warm start needs them, and refuses those anyway.
-  s.mark_side = verified ? f.read_ints("/marks/side", 1) : std::vector<std::int32_t>(marks, 0);
-  if (s.mark_outlier.size() != marks || s.mark_time.size() != marks || s.mark_range.size() != marks ||
-      s.mark_mine.size() != marks || s.mark_side.size() != marks)
-    bad(f, "/marks", "expected " + std::to_string(marks) + " rows in every dataset");
-  s.gps_outlier = f.read_ints("/gps/outlier", 1);
-  if (verified) {
-    verify_digest(f, "/marks/outlier", s.mark_outlier, marks, 1, *verified);
-    verify_digest(f, "/marks/time", s.mark_time, marks, 1, *verified);
-    verify_digest(f, "/marks/range", s.mark_range, marks, 1, *verified);
-    verify_digest(f, "/marks/mine", s.mark_mine, marks, 1, *verified);
-    verify_digest(f, "/marks/side", s.mark_side, marks, 1, *verified);
-    verify_digest(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size(), 1, *verified);
-  }
-  expect_flags(f, "/marks/outlier", s.mark_outlier);
-  expect_flags(f, "/gps/outlier", s.gps_outlier);
-  for (std::size_t j = 0; j < marks; ++j) {
-    const std::string row = "row " + std::to_string(j);
-    if (!std::isfinite(s.mark_time[j])) bad(f, "/marks/time", row + ": time must be finite");
-    if (!std::isfinite(s.mark_range[j]) || s.mark_range[j] < 0.0) bad(f, "/marks/range", row + ": range must be finite and >= 0");
-    if (s.mark_mine[j] < -1 || s.mark_mine[j] >= s.mine_count)
-      bad(f, "/marks/mine", row + ": mine " + std::to_string(s.mark_mine[j]) + " is not one of the result's " +
-                                std::to_string(s.mine_count) + " mines (-1 for unknown)");
-    if (verified && s.mark_side[j] != 1 && s.mark_side[j] != -1) bad(f, "/marks/side", row + ": side must be +1 or -1");
-  }
+  read_marks_and_fixes(f, marks, verified, s);
   if (parts.waterfall && r.format_version >= 3) read_waterfall_cells(f, n, k, s.waterfall, *verified);
-  if (parts.waterfall && r.format_version < 3) {
-    const H5Shape ws = f.shape("/waterfall/lower");
-    if (ws.rows != n || (k > 0 && ws.columns != k))
-      bad(f, "/waterfall/lower", "expected " + std::to_string(n) + " x " + std::to_string(k));
-    // Formats 1 and 2: a dense steps x mines table, NaN where a mine cannot appear.
-    const std::vector<double> lower = f.read_doubles("/waterfall/lower"), upper = f.read_doubles("/waterfall/upper");
-    if (upper.size() != lower.size()) bad(f, "/waterfall/upper", "shape differs from /waterfall/lower");
-    if (k == 0 && !lower.empty()) bad(f, "/waterfall/lower", "cells in a result without mines");
-    if (verified) {
-      verify_digest(f, "/waterfall/lower", lower, ws.rows, ws.columns, *verified);
-      verify_digest(f, "/waterfall/upper", upper, ws.rows, ws.columns, *verified);
-    }
-    Waterfall& w = s.waterfall;
-    w.steps = n;
-    w.mines = k;
-    for (std::size_t c = 0; c < lower.size(); ++c) {
-      const double lo = lower[c], hi = upper[c];
-      if (std::isnan(lo) && std::isnan(hi)) continue;
-      if (!(lo <= hi)) bad(f, "/waterfall", "cell " + std::to_string(c) + ": lower bound above upper bound");
-      w.add(c / k, c % k, lo, hi);
-    }
-  }
-  if (verified) {
-    std::vector<std::pair<std::string, std::string>> fields = root_fields(r, r.format_version);
-    for (const char* dataset : kDatasets) {
-      if (r.format_version < 3 && format_3_only(dataset)) continue;
-      const auto stored = f.string_attribute(dataset, kind);
-      if (!stored) bad(f, dataset, "has no " + kind + " attribute (edited or damaged)");
-      fields.emplace_back(dataset, *stored);
-    }
-    if (f.string_attribute("/", kind) != digest_of_fields(fields, *verified))
-      bad(f, "/", "attributes or dataset digests " + differ_from_recorded(*verified));
-  }
-  if (s.report.consistent) {
-    if (empty_domain) bad(f, "/tube", "a consistent result with an empty domain (edited or damaged)");
-    for (const Vec3I& m : d.mines)
-      for (int c = 0; c < 3; ++c)
-        if (m[c].is_empty()) bad(f, "/mines", "a consistent result with an empty mine box (edited or damaged)");
-  }
+  if (parts.waterfall && r.format_version < 3) read_dense_waterfall(f, n, k, verified, s.waterfall);
+  if (verified) verify_root_digest(f, r, *verified);
+  if (s.report.consistent) check_consistent_domains(f, empty_domain, s.domains.mines);
   return r;
 }
 

@@ -28,8 +28,7 @@ using Clock = std::chrono::steady_clock;
 
 double elapsed_ms(Clock::time_point since) { return std::chrono::duration<double, std::milli>(Clock::now() - since).count(); }
 
-int run_kalman(std::span<const std::string> args) {
-  po::options_description options("kalman options");
+void add_kalman_options(po::options_description& options) {
   options.add_options()
       ("mission", po::value<std::string>()->required(), "mission file (HDF5)")
       ("output,o", po::value<std::string>()->required(), "result file to write (HDF5)")
@@ -48,11 +47,10 @@ int run_kalman(std::span<const std::string> args) {
        "the fixes' and marks' samples; without --biases) or dead-reckoning");
   add_json_option(options, true);
   add_skip_existing(options);
-  po::positional_options_description positional;
-  positional.add("mission", 1);
-  po::variables_map v;
-  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--max-iterations N] [--tolerance T] [--stall-fraction F] [--biases] [--start coarse|dead-reckoning] [--json] [--skip-existing]"))
-    return kExitOk;
+}
+
+// The smoother's options as given; UsageError naming the option when one is not usable.
+KalmanOptions kalman_options_given(const po::variables_map& v) {
   KalmanOptions o;
   o.noise_factor = parse_double("--noise-factor", v["noise-factor"].as<std::string>());
   o.max_iterations = parse_int("--max-iterations", v["max-iterations"].as<std::string>());
@@ -64,6 +62,77 @@ int run_kalman(std::span<const std::string> args) {
     throw UsageError("--start: expected coarse or dead-reckoning, got " + io::quoted_input(v["start"].as<std::string>()));
   o.start = *chosen_start;
   if (const std::string why = o.validate(); !why.empty()) throw UsageError("--" + why);
+  return o;
+}
+
+// On stderr: a note when the linearisations stopped at the rounding floor, a warning
+// when they reached the cap unconverged.
+void warn_unless_converged(const KalmanResult& k, double tolerance) {
+  if (k.stalled)
+    std::fprintf(stderr,
+                 "gesmi kalman: note: stopped after %d linearisations at the smoother's rounding floor: the steps "
+                 "stopped shrinking (the largest %s m, more than the tolerance %s m, but no coordinate moved more "
+                 "than %s of its standard deviation); --stall-fraction 0 goes on to the cap\n",
+                 k.iterations, io::format_number(k.last_step).c_str(), io::format_number(tolerance).c_str(),
+                 io::format_number(k.last_step_sigmas).c_str());
+  else if (!k.converged)
+    std::fprintf(stderr,
+                 "gesmi kalman: warning: not converged after %d linearisations (the last moved a coordinate by %s m, more "
+                 "than the tolerance %s m): raise --max-iterations (up to 100), or "
+                 "--tolerance if a coarser estimate will do\n",
+                 k.iterations, io::format_number(k.last_step).c_str(), io::format_number(tolerance).c_str());
+}
+
+// The report's "kalman" fields.
+void add_kalman_fields(CommandReport& report, const io::KalmanFile& file, std::size_t steps, int mines) {
+  const Containment& c = file.containment;
+  const KalmanOptions& o = file.options;
+  report["kalman"] = {{"steps", steps},
+                      {"mines", mines},
+                      {"containment_3sigma_horizontal", io::number_json(c.horizontal)},
+                      {"containment_3sigma_vertical", io::number_json(c.vertical)},
+                      {"containment_mines", io::number_json(c.mines)},
+                      {"containment_mines_plane", io::number_json(c.mines_plane)},
+                      {"iterations", file.result.iterations},
+                      {"start", kalman_start_name(o.start)},
+                      {"coarse_iterations", file.result.coarse_iterations},
+                      {"last_step_m", io::number_json(file.result.last_step)},
+                      {"last_step_sigmas", io::number_json(file.result.last_step_sigmas)},
+                      {"converged", file.result.converged},
+                      {"stalled", file.result.stalled},
+                      {"tolerance_m", o.tolerance},
+                      {"stall_fraction", o.stall_fraction},
+                      {"biases", o.biases}};
+  add_kalman_checks(report["kalman"], file.result);
+}
+
+// The summary on stdout, without --json.
+void print_summary(const io::KalmanFile& file, std::size_t steps, const std::string& output) {
+  const KalmanResult& k = file.result;
+  const Containment& c = file.containment;
+  const std::string coarse =
+      k.coarse_iterations > 0 ? " (started from a coarse chain solved in " + std::to_string(k.coarse_iterations) + ")" : "";
+  std::printf("kalman smoother: %zu steps in %.1f ms, %s after %d linearisation%s%s (last step %.2g m), written to %s",
+              steps, file.timings_ms.at("smooth"),
+              k.converged ? "converged" : k.stalled ? "stopped at the rounding floor" : "NOT converged", k.iterations,
+              k.iterations == 1 ? "" : "s", coarse.c_str(), k.last_step, output.c_str());
+  if (!std::isnan(c.horizontal))
+    std::printf("; truth within 3 sigma: horizontal %.1f %%, vertical %.1f %% of steps; inside the 99.73 %% region: "
+                "%.0f %% of mines (3-D), %.0f %% (plane)",
+                100.0 * c.horizontal, 100.0 * c.vertical, 100.0 * c.mines, 100.0 * c.mines_plane);
+  std::printf("\n");
+  print_kalman_checks(file.result);
+}
+
+int run_kalman(std::span<const std::string> args) {
+  po::options_description options("kalman options");
+  add_kalman_options(options);
+  po::positional_options_description positional;
+  positional.add("mission", 1);
+  po::variables_map v;
+  if (!parse_options(args, options, positional, v, "gesmi kalman MISSION.h5 -o KALMAN.h5 [--noise-factor F] [--max-iterations N] [--tolerance T] [--stall-fraction F] [--biases] [--start coarse|dead-reckoning] [--json] [--skip-existing]"))
+    return kExitOk;
+  const KalmanOptions o = kalman_options_given(v);
   const std::string output = v["output"].as<std::string>();
   const auto file_options = {"mission", "config"};  // the options naming files read
   io::OutputSet outputs(input_files(v, file_options));
@@ -92,8 +161,7 @@ int run_kalman(std::span<const std::string> args) {
     for (std::size_t i = 0; 3 * i < rows.size(); ++i) count.add(first + i, rows[3 * i], rows[3 * i + 1], rows[3 * i + 2]);
   });
   file.timings_ms["load"] += elapsed_ms(start);
-  const Containment c = count.finish(mission.truth_mines);
-  file.containment = c;
+  file.containment = count.finish(mission.truth_mines);
   const std::size_t steps = mission.size();
   file.time = std::move(mission.time);  // (no second copy: 80 MB at 10^7 steps)
   file.epoch = mission.epoch;
@@ -106,55 +174,15 @@ int run_kalman(std::span<const std::string> args) {
   outputs.commit();
   file.timings_ms["write"] = elapsed_ms(start);
   progress.finish();
-  const KalmanResult& k = file.result;
-  if (k.stalled)
-    std::fprintf(stderr,
-                 "gesmi kalman: note: stopped after %d linearisations at the smoother's rounding floor: the steps "
-                 "stopped shrinking (the largest %s m, more than the tolerance %s m, but no coordinate moved more "
-                 "than %s of its standard deviation); --stall-fraction 0 goes on to the cap\n",
-                 k.iterations, io::format_number(k.last_step).c_str(), io::format_number(o.tolerance).c_str(),
-                 io::format_number(k.last_step_sigmas).c_str());
-  else if (!k.converged)
-    std::fprintf(stderr,
-                 "gesmi kalman: warning: not converged after %d linearisations (the last moved a coordinate by %s m, more "
-                 "than the tolerance %s m): raise --max-iterations (up to 100), or "
-                 "--tolerance if a coarser estimate will do\n",
-                 k.iterations, io::format_number(k.last_step).c_str(), io::format_number(o.tolerance).c_str());
+  warn_unless_converged(file.result, o.tolerance);
   CommandReport report("kalman", v);
   if (report.enabled()) {
     report.inputs(v, file_options);
     report.output(output);
     report.timings(file.timings_ms);
-    report["kalman"] = {{"steps", steps},
-                        {"mines", mission.mine_count},
-                        {"containment_3sigma_horizontal", io::number_json(c.horizontal)},
-                        {"containment_3sigma_vertical", io::number_json(c.vertical)},
-                        {"containment_mines", io::number_json(c.mines)},
-                        {"containment_mines_plane", io::number_json(c.mines_plane)},
-                        {"iterations", file.result.iterations},
-                        {"start", kalman_start_name(o.start)},
-                        {"coarse_iterations", file.result.coarse_iterations},
-                        {"last_step_m", io::number_json(file.result.last_step)},
-                        {"last_step_sigmas", io::number_json(file.result.last_step_sigmas)},
-                        {"converged", file.result.converged},
-                        {"stalled", file.result.stalled},
-                        {"tolerance_m", o.tolerance},
-                        {"stall_fraction", o.stall_fraction},
-                        {"biases", o.biases}};
-    add_kalman_checks(report["kalman"], file.result);
+    add_kalman_fields(report, file, steps, mission.mine_count);
   } else {
-    const std::string coarse =
-        k.coarse_iterations > 0 ? " (started from a coarse chain solved in " + std::to_string(k.coarse_iterations) + ")" : "";
-    std::printf("kalman smoother: %zu steps in %.1f ms, %s after %d linearisation%s%s (last step %.2g m), written to %s",
-                steps, file.timings_ms["smooth"],
-                k.converged ? "converged" : k.stalled ? "stopped at the rounding floor" : "NOT converged", k.iterations,
-                k.iterations == 1 ? "" : "s", coarse.c_str(), k.last_step, output.c_str());
-    if (!std::isnan(c.horizontal))
-      std::printf("; truth within 3 sigma: horizontal %.1f %%, vertical %.1f %% of steps; inside the 99.73 %% region: "
-                  "%.0f %% of mines (3-D), %.0f %% (plane)",
-                  100.0 * c.horizontal, 100.0 * c.vertical, 100.0 * c.mines, 100.0 * c.mines_plane);
-    std::printf("\n");
-    print_kalman_checks(file.result);
+    print_summary(file, steps, output);
   }
   return report.finish(kExitOk);
 }

@@ -56,9 +56,8 @@ struct ModelView {
   def_property(#name, [](py::object self) { return view(self.cast<Mission&>().name, self); }, \
                [](Mission& mission, const py::array_t<double, py::array::c_style | py::array::forcecast>& a) { mission.name = to_vector(a); })
 
-}  // namespace
-
-void bind_mission(py::module_& m) {
+// The sensor model of a mission as a mapping (ModelView).
+void bind_sensor_model(py::module_& m) {
   py::class_<ModelView>(m, "SensorModel", "The sensor error bounds of a mission, as a mapping (docs/formats.md)")
       .def("__getitem__", &ModelView::get)
       .def("__setitem__", &ModelView::set)
@@ -76,7 +75,29 @@ void bind_mission(py::module_& m) {
         for (const std::string& k : v.keys()) d[py::str(k)] = v.get(k);
         return "SensorModel(" + py::repr(d).cast<std::string>() + ")";
       });
+}
 
+// Mission.add_mark(): the mark appended to every mark array, then the mission checked;
+// a refused mark is taken back off before the error propagates.
+void add_checked_mark(Mission& s, double time, double range, const std::string& side, int mine) {
+  s.mark_time.push_back(time);
+  s.mark_range.push_back(range);
+  s.mark_side.push_back(side == "port" ? -1 : side == "starboard" ? 1 : 0);
+  s.mark_mine.push_back(mine);
+  if (!s.truth_marks_outlier.empty()) s.truth_marks_outlier.push_back(0);
+  if (!s.truth_marks_mine.empty()) s.truth_marks_mine.push_back(-1);
+  try {
+    io::validate_mission(s, "mission");
+  } catch (...) {
+    for (auto* v : {&s.mark_time, &s.mark_range}) v->pop_back();
+    for (auto* v : {&s.mark_side, &s.mark_mine}) v->pop_back();
+    if (!s.truth_marks_outlier.empty()) s.truth_marks_outlier.pop_back();
+    if (!s.truth_marks_mine.empty()) s.truth_marks_mine.pop_back();
+    throw;
+  }
+}
+
+void bind_mission_class(py::module_& m) {
   py::class_<Mission>(m, "Mission", "A mission's measurements as flat arrays on one time grid (docs/formats.md)")
       .def(py::init<>())
       .GESMI_ARRAY(time).GESMI_ARRAY(roll).GESMI_ARRAY(pitch).GESMI_ARRAY(heading)
@@ -100,65 +121,53 @@ void bind_mission(py::module_& m) {
         io::validate_mission(s, "mission");
         io::fill_local_gps(s, "mission");
       }, "Checks the mission as the file reader does (FormatError naming the field) and converts the GPS fixes")
-      .def(
-          "add_mark",
-          [](Mission& s, double time, double range, const std::string& side, int mine) {
-            s.mark_time.push_back(time);
-            s.mark_range.push_back(range);
-            s.mark_side.push_back(side == "port" ? -1 : side == "starboard" ? 1 : 0);
-            s.mark_mine.push_back(mine);
-            if (!s.truth_marks_outlier.empty()) s.truth_marks_outlier.push_back(0);
-            if (!s.truth_marks_mine.empty()) s.truth_marks_mine.push_back(-1);
-            try {
-              io::validate_mission(s, "mission");
-            } catch (...) {
-              for (auto* v : {&s.mark_time, &s.mark_range}) v->pop_back();
-              for (auto* v : {&s.mark_side, &s.mark_mine}) v->pop_back();
-              if (!s.truth_marks_outlier.empty()) s.truth_marks_outlier.pop_back();
-              if (!s.truth_marks_mine.empty()) s.truth_marks_mine.pop_back();
-              throw;
-            }
-          },
-          py::arg("time"), py::arg("range"), py::arg("side") = "starboard", py::arg("mine") = -1,
-          "Adds an operator's mark (mine -1: unknown), checked as the mission file reader checks marks");
+      .def("add_mark", &add_checked_mark, py::arg("time"), py::arg("range"), py::arg("side") = "starboard",
+           py::arg("mine") = -1,
+           "Adds an operator's mark (mine -1: unknown), checked as the mission file reader checks marks");
+}
 
+// simulate(): a reference-like mission with ground truth, as `gesmi simulate` makes it.
+Mission simulated_mission(std::uint64_t seed, const std::string& errors, double duration, double rate, int mines,
+                          double missed, double unassociated, int outliers, double surface, double wave_height,
+                          double wave_period, bool surface_dvl, int bursts, double burst_jerk) {
+  SimulationOptions o;
+  o.seed = seed;
+  if (!parse_simulated_errors(errors, o.errors))
+    throw io::FormatError("simulate: errors: expected uniform, worst-case, at-samples, drifting or corners");
+  o.duration = duration;
+  o.rate = rate;
+  o.mines = mines;
+  o.missed = missed;
+  o.unassociated = unassociated;
+  o.outliers = outliers;
+  o.surface = surface;
+  o.wave_height = wave_height;
+  o.wave_period = wave_period;
+  o.surface_dvl = surface_dvl;
+  o.bursts = bursts;
+  o.burst_jerk = burst_jerk;
+  if (const std::string why = o.validate(); !why.empty()) throw io::FormatError("simulate: " + why);
+  Mission s = simulate_mission(o);
+  s.origin = {48.212920614, -4.458227931};  // the reference start fix, as `gesmi simulate`
+  io::set_geodetic_gps(s);
+  io::fill_local_gps(s, "simulated mission");
+  return s;
+}
+
+}  // namespace
+
+void bind_mission(py::module_& m) {
+  bind_sensor_model(m);
+  bind_mission_class(m);
   m.def("read_mission", [](const std::string& path) { return io::read_mission(path); }, py::arg("path"),
         "Reads and validates a mission file (HDF5), its truth included");
   m.def("write_mission", [](const Mission& s, const std::string& path) { io::write_mission(s, path); }, py::arg("mission"),
         py::arg("path"), "Writes a mission file atomically");
-  m.def(
-      "simulate",
-      [](std::uint64_t seed, const std::string& errors, double duration, double rate, int mines, double missed,
-         double unassociated, int outliers, double surface, double wave_height, double wave_period, bool surface_dvl,
-         int bursts, double burst_jerk) {
-        SimulationOptions o;
-        o.seed = seed;
-        if (!parse_simulated_errors(errors, o.errors))
-          throw io::FormatError("simulate: errors: expected uniform, worst-case, at-samples, drifting or corners");
-        o.duration = duration;
-        o.rate = rate;
-        o.mines = mines;
-        o.missed = missed;
-        o.unassociated = unassociated;
-        o.outliers = outliers;
-        o.surface = surface;
-        o.wave_height = wave_height;
-        o.wave_period = wave_period;
-        o.surface_dvl = surface_dvl;
-        o.bursts = bursts;
-        o.burst_jerk = burst_jerk;
-        if (const std::string why = o.validate(); !why.empty()) throw io::FormatError("simulate: " + why);
-        Mission s = simulate_mission(o);
-        s.origin = {48.212920614, -4.458227931};  // the reference start fix, as `gesmi simulate`
-        io::set_geodetic_gps(s);
-        io::fill_local_gps(s, "simulated mission");
-        return s;
-      },
-      py::arg("seed") = 1, py::arg("errors") = "uniform", py::arg("duration") = 5999.4, py::arg("rate") = 10.0,
-      py::arg("mines") = 6, py::arg("missed") = 0.0, py::arg("unassociated") = 0.0, py::arg("outliers") = 0,
-      py::arg("surface") = 0.0, py::arg("wave_height") = 0.0, py::arg("wave_period") = 6.0, py::arg("surface_dvl") = false,
-      py::arg("bursts") = 0, py::arg("burst_jerk") = 10.0,
-      "Simulates a reference-like mission with ground truth (as `gesmi simulate`)");
+  m.def("simulate", &simulated_mission, py::arg("seed") = 1, py::arg("errors") = "uniform", py::arg("duration") = 5999.4,
+        py::arg("rate") = 10.0, py::arg("mines") = 6, py::arg("missed") = 0.0, py::arg("unassociated") = 0.0,
+        py::arg("outliers") = 0, py::arg("surface") = 0.0, py::arg("wave_height") = 0.0, py::arg("wave_period") = 6.0,
+        py::arg("surface_dvl") = false, py::arg("bursts") = 0, py::arg("burst_jerk") = 10.0,
+        "Simulates a reference-like mission with ground truth (as `gesmi simulate`)");
 }
 
 }  // namespace gesmi::python
