@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "io/format_error.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "solver/interval/rounding.h"
 #include "solver/mission/frame_scale.h"
 #include "solver/mission/meridian_convergence.h"

@@ -5,7 +5,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <regex>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "tests/support/paths.h"
 
@@ -27,6 +31,36 @@ TEST(Layering, SolverIncludesNoIoAndNoFileLibraries) {
       EXPECT_EQ(text.str().find(word), std::string::npos) << entry.path() << " contains " << word;
   }
   EXPECT_GT(files, 5);
+}
+
+// io/'s folders in layers (io/README.md): a folder includes only from its own layer's
+// folders or the layers below, so the folders form no cycle.
+TEST(Layering, IoFoldersIncludeOnlyTheLayersBelow) {
+  const std::vector<std::vector<std::string>> layers = {
+      {"text", "time", "digest", "output"}, {"report", "hdf5"}, {"files", "plot"}, {"imports"}, {"exports", "localization"}};
+  const auto layer_of = [&](const std::string& folder) {
+    for (std::size_t i = 0; i < layers.size(); ++i)
+      for (const std::string& f : layers[i])
+        if (f == folder) return static_cast<int>(i);
+    return -1;
+  };
+  const std::regex include("#include \"io/([a-z0-9_]+)/");
+  int files = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(gesmi::test::source_dir() + "/io")) {
+    const std::filesystem::path relative = std::filesystem::relative(entry.path(), gesmi::test::source_dir() + "/io");
+    if (!entry.is_regular_file() || std::distance(relative.begin(), relative.end()) < 2) continue;  // (root files)
+    const int own = layer_of(relative.begin()->string());
+    ASSERT_GE(own, 0) << relative << ": a folder of io/ missing from the layers here and in io/README.md";
+    ++files;
+    std::ifstream in(entry.path());
+    for (std::string line; std::getline(in, line);) {
+      std::smatch m;
+      if (!std::regex_search(line, m, include)) continue;
+      const int theirs = layer_of(m[1].str());
+      EXPECT_TRUE(theirs >= 0 && theirs <= own) << relative << " includes io/" << m[1].str() << "/";
+    }
+  }
+  EXPECT_GT(files, 50);
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "io/output/atomic_output.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/format_error.h"
 #include "io/imports/import_nav_csv.h"
 #include "io/files/sensor_model_yaml.h"

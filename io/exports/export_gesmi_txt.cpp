@@ -5,7 +5,7 @@
 #include <string>
 
 #include "io/output/atomic_output.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/format_error.h"
 #include "io/imports/import_gesmi_txt.h"
 

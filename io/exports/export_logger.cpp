@@ -7,7 +7,7 @@
 #include "io/exports/export_csv.h"
 #include "io/files/sensor_model_yaml.h"
 #include "io/format_error.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/time/utc_time.h"
 
 namespace gesmi::io {

@@ -8,7 +8,7 @@
 #include "io/output/atomic_output.h"
 #include "io/exports/geodetic_grid.h"
 #include "io/format_error.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/io_version.h"
 #include "io/report/report_json.h"
 #include "io/time/utc_time.h"

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "io/output/atomic_output.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/format_error.h"
 #include "io/geodesy.h"
 #include "io/files/model_attributes.h"
@@ -14,7 +14,7 @@
 #include "io/files/sensor_model_yaml.h"
 #include "io/hdf5/h5_file.h"
 #include "io/hdf5/h5_format.h"
-#include "io/imports/mark_rules.h"
+#include "io/files/mark_rules.h"
 #include "io/text/message_text.h"
 #include "io/time/utc_time.h"
 #include "solver/network/mission_network.h"

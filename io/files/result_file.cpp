@@ -6,7 +6,7 @@
 #include <map>
 
 #include "io/output/atomic_output.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/format_error.h"
 #include "io/files/mission_digest.h"
 #include "io/io_version.h"

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/format_error.h"
 #include "io/text/message_text.h"
 

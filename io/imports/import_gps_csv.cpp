@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/imports/csv_reader.h"
 
 namespace gesmi::io {

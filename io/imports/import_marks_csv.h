@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "io/imports/column_map.h"
-#include "io/imports/mark_rules.h"
+#include "io/files/mark_rules.h"
 #include "solver/mission/mission.h"
 
 namespace gesmi::io {

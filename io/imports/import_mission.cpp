@@ -4,7 +4,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/format_error.h"
 #include "io/geodesy.h"
 #include "io/imports/column_map.h"

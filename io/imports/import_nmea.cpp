@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "io/format_error.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/text/message_text.h"
 
 namespace gesmi::io {

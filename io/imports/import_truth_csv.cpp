@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/imports/csv_reader.h"
 #include "io/text/message_text.h"
 

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "io/format_error.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "solver/interval/rounding.h"
 
 namespace gesmi::io {

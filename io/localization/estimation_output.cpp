@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "io/format_error.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/output/atomic_output.h"
 #include "io/report/report_json.h"
 

@@ -6,7 +6,7 @@
 #include <span>
 
 #include "io/format_error.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/text/message_text.h"
 #include "io/text/strict_yaml.h"
 #include "io/text/yaml_fields.h"

@@ -6,7 +6,7 @@
 
 #include "io/output/atomic_output.h"
 #include "io/format_error.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/localization/localization_hdf5.h"
 #include "io/localization/localization_json.h"
 #include "io/plot/localization_picture.h"

@@ -10,7 +10,7 @@
 #include <set>
 #include <sstream>
 
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/format_error.h"
 #include "io/text/message_text.h"
 #include "io/text/strict_yaml.h"

@@ -5,7 +5,7 @@
 #include "io/output/output_set.h"
 #include "io/output/atomic_output.h"
 #include "io/files/result_file.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "solver/network/look_again.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"

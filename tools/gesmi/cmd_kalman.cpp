@@ -14,7 +14,7 @@
 #include "tools/gesmi/progress.h"
 #include "tools/gesmi/solve_arguments.h"
 #include "tools/gesmi/skip_existing.h"
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "tools/gesmi/command_report.h"
 #include "tools/gesmi/kalman_report.h"
 #include "io/report/report_json.h"

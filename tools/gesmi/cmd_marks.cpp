@@ -6,7 +6,7 @@
 #include "io/output/output_set.h"
 #include "io/output/atomic_output.h"
 #include "io/text/message_text.h"
-#include "io/imports/mark_rules.h"
+#include "io/files/mark_rules.h"
 #include "io/files/mission_file.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
@@ -79,7 +79,7 @@ int add_mark(std::span<const std::string> args) {
   Mission m = io::read_mission(v["mission"].as<std::string>());
   const long long mine = mine_text == "?" ? -1 : parse_integer("--mine", mine_text);
   const int side_sign = side == "starboard" ? 1 : -1;
-  // The rules of the mission file and of `gesmi import marks` (io/imports/mark_rules.h).
+  // The rules of the mission file and of `gesmi import marks` (io/files/mark_rules.h).
   if (const auto problem = io::check_mark(io::mark_rules(m), time, mine, range, side_sign))
     throw UsageError("--" + std::string(io::mark_field_name(problem->field)) + ": " + problem->reason);
   m.mark_time.push_back(time);

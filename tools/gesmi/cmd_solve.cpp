@@ -11,7 +11,7 @@
 #include "io/files/mission_file.h"
 #include "io/format_error.h"
 #include "io/output/output_set.h"
-#include "io/files/solve_outputs.h"
+#include "io/exports/solve_outputs.h"
 #include "io/exports/result_exports.h"
 #include "io/files/warm_start_file.h"
 #include "solver/solve/solve_mission.h"

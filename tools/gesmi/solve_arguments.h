@@ -3,7 +3,7 @@
 
 #include <boost/program_options.hpp>
 
-#include "io/files/solve_outputs.h"
+#include "io/exports/solve_outputs.h"
 #include "solver/mission/mission.h"
 #include "solver/solve/solve_mission.h"
 

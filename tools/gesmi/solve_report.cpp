@@ -7,7 +7,7 @@
 #include <limits>
 #include <numeric>
 
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "solver/network/inconsistency_text.h"
 
 namespace gesmi::cli {

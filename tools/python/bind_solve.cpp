@@ -13,7 +13,7 @@
 #include "io/geodesy.h"
 #include "io/files/mission_file.h"
 #include "io/files/result_file.h"
-#include "io/files/solve_outputs.h"
+#include "io/exports/solve_outputs.h"
 #include "io/files/warm_start_file.h"
 #include "solver/network/inconsistency_text.h"
 #include "solver/solve/solve_mission.h"

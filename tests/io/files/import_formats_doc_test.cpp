@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/imports/import_nav_csv.h"
 #include "tests/support/paths.h"
 

@@ -9,7 +9,7 @@
 #include <random>
 #include <sstream>
 
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 #include "io/format_error.h"
 #include "io/imports/import_gps_csv.h"
 #include "io/imports/import_marks_csv.h"

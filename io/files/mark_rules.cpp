@@ -1,8 +1,8 @@
-#include "io/imports/mark_rules.h"
+#include "io/files/mark_rules.h"
 
 #include <cmath>
 
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 
 namespace gesmi::io {
 

@@ -1,4 +1,4 @@
-#include "io/files/solve_outputs.h"
+#include "io/exports/solve_outputs.h"
 
 #include <filesystem>
 

@@ -1,4 +1,4 @@
-#include "io/imports/csv_number.h"
+#include "io/text/csv_number.h"
 
 #include <charconv>
 #include <cmath>
