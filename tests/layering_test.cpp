@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -44,7 +43,7 @@ TEST(Layering, IoFoldersIncludeOnlyTheLayersBelow) {
         if (f == folder) return static_cast<int>(i);
     return -1;
   };
-  const std::regex include("#include \"io/([a-z0-9_]+)/");
+  const std::string include = "#include \"io/";
   int files = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(gesmi::test::source_dir() + "/io")) {
     const std::filesystem::path relative = std::filesystem::relative(entry.path(), gesmi::test::source_dir() + "/io");
@@ -54,10 +53,13 @@ TEST(Layering, IoFoldersIncludeOnlyTheLayersBelow) {
     ++files;
     std::ifstream in(entry.path());
     for (std::string line; std::getline(in, line);) {
-      std::smatch m;
-      if (!std::regex_search(line, m, include)) continue;
-      const int theirs = layer_of(m[1].str());
-      EXPECT_TRUE(theirs >= 0 && theirs <= own) << relative << " includes io/" << m[1].str() << "/";
+      if (line.rfind(include, 0) != 0) continue;
+      const std::string path = line.substr(include.size());
+      const std::size_t slash = path.find('/');
+      if (slash == std::string::npos) continue;  // (io/'s root files)
+      const std::string folder = path.substr(0, slash);
+      const int theirs = layer_of(folder);
+      EXPECT_TRUE(theirs >= 0 && theirs <= own) << relative << " includes io/" << folder << "/";
     }
   }
   EXPECT_GT(files, 50);
