@@ -42,11 +42,12 @@ SolveOptions parse_solve_options(const po::variables_map& v) {
   SolveOptions o;
   o.propagation.max_sweeps = parse_int("--max-sweeps", v["max-sweeps"].as<std::string>());
   o.propagation.tolerance = parse_double("--tolerance", v["tolerance"].as<std::string>());
+  if (v.count("max-outliers") && v.count("minimal-outliers"))
+    throw UsageError("--max-outliers and --minimal-outliers cannot be combined");
   for (const std::string name : {"max-outliers", "minimal-outliers"}) {
     if (!v.count(name)) continue;
-    if (v.count("max-outliers") && v.count("minimal-outliers"))
-      throw UsageError("--max-outliers and --minimal-outliers cannot be combined");
-    // (a negative count would mean "none": kept negative but for -1, which validate() refuses)
+    // (-1 is the options' "no outlier mode": a negative count given here becomes -2,
+    // which validate() refuses)
     const int q = parse_int("--" + name, v[name].as<std::string>());
     o.max_outliers = q < 0 ? -2 : q;
     o.outlier_mode = name == "max-outliers" ? OutlierMode::relaxed : OutlierMode::minimal;
