@@ -52,7 +52,7 @@ void write_gesmi_txt(const Mission& m, const std::string& source, std::ostream& 
     for (std::size_t c = 0; c < GesmiColumn::x; ++c) {
       const double value = (*values[c])[k];
       field(value);
-      field(given[c]->empty() ? model_half_width(m.model, c, value) : (*given[c])[k]);
+      field(given[c]->empty() ? column_half_width(m.model, c, value) : (*given[c])[k]);
     }
     if (fix_at[k] >= 0) {
       const auto i = static_cast<std::size_t>(fix_at[k]);

@@ -48,17 +48,15 @@ std::string field_name(std::size_t token) {
 
 const char* gesmi_column_name(std::size_t column) { return kNames[column]; }
 
-double model_half_width(const SensorModel& model, std::size_t column, double value) {
-  switch (column) {
-    case GesmiColumn::roll: return model.roll;
-    case GesmiColumn::pitch: return model.pitch;
-    case GesmiColumn::heading: return model.heading;
-    case GesmiColumn::vx:
-    case GesmiColumn::vy:
-    case GesmiColumn::vz: return add_up(mul_up(model.dvl_relative, std::fabs(value)), model.dvl_absolute);
-    case GesmiColumn::depth: return depth_bound(model, value);
-    default: return model.altitude;
-  }
+double column_half_width(const SensorModel& model, std::size_t column, double value) {
+  // The navigation channel of each column, by name.
+  static const std::array<std::size_t, 8> kChannel = [] {
+    std::array<std::size_t, 8> out{};
+    for (std::size_t c = 0; c < out.size(); ++c)
+      out[c] = static_cast<std::size_t>(&nav_channel(kNames[c]) - nav_channels().data());
+    return out;
+  }();
+  return model_half_width(model, kChannel[column], value);
 }
 
 GesmiTextLog read_gesmi_txt(std::istream& in, const std::string& name) {
@@ -130,7 +128,7 @@ Mission mission_from_gesmi_txt(GesmiTextLog log, const std::string& name, const 
     if (any) {
       // Samples without a half-width keep the model's bound.
       for (std::size_t k = 0; k < n; ++k)
-        if (std::isnan(given[k])) given[k] = model_half_width(model, c, log.value[c][k]);
+        if (std::isnan(given[k])) given[k] = column_half_width(model, c, log.value[c][k]);
       m.half_widths.*channel.half_widths = std::move(given);
     }
     m.*channel.readings = std::move(log.value[c]);

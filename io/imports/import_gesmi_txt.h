@@ -51,8 +51,8 @@ const char* gesmi_column_name(std::size_t column);
 GesmiTextLog read_gesmi_txt(std::istream& in, const std::string& name);
 
 /// The sensor model's half-width for one sample of a column (roll..altitude) with
-/// reading `value`, rounded up as the solver computes it.
-double model_half_width(const SensorModel& model, std::size_t column, double value);
+/// reading `value` (gesmi::model_half_width of its channel).
+double column_half_width(const SensorModel& model, std::size_t column, double value);
 
 enum class GesmiXy { fixes, truth };
 

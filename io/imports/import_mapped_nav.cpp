@@ -146,8 +146,6 @@ void widen_converted_bounds(const SensorModel& input_model, const NavColumns& co
 // The readings into out.series, each with its half-width from out.model; FormatError
 // for a channel without any reading.
 void take_series(LogReadings& log, const std::string& name, const ColumnMap& map, MappedNavLog& out) {
-  const SensorModel& model = out.model;
-  const double angle_bound[3] = {model.roll, model.pitch, model.heading};
   NavSeries& s = out.series;
   s.name = name;
   s.row_time = std::move(log.row_time);
@@ -158,12 +156,8 @@ void take_series(LogReadings& log, const std::string& name, const ColumnMap& map
     if (from.readings.time.empty())
       throw FormatError(name + ": " + std::string(channel_name(c)) + ": no reading in the file (column " +
                         quoted_input(map.field(channel_name(c))->column) + ")");
-    // Each reading's half-width as the solver computes it from the model (SensorBoxes).
     for (const double v : from.readings.value)
-      from.readings.half_width.push_back(c == depth      ? depth_bound(model, v)
-                                         : c == altitude ? model.altitude
-                                         : c >= vx       ? dvl_bound(model, v)
-                                                         : angle_bound[c]);
+      from.readings.half_width.push_back(model_half_width(out.model, static_cast<std::size_t>(c), v));
     s.channel[static_cast<std::size_t>(c)] = std::move(from.readings);
     s.line[static_cast<std::size_t>(c)] = std::move(from.line);
   }

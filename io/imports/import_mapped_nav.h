@@ -21,10 +21,6 @@
 
 namespace gesmi::io {
 
-/// Longest time without a reading of any navigation sensor unless the map's
-/// `max_gap` says otherwise (s).
-inline constexpr double kDefaultMaxGap = 60.0;
-
 struct MappedNavLog {
   NavSeries series;                   // each channel's readings
   std::optional<std::int64_t> epoch;  // UTC seconds of t = 0, from absolute times

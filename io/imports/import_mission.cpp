@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 
 #include "io/text/csv_number.h"
 #include "io/format_error.h"
@@ -119,18 +120,24 @@ void move_nav(NavLog&& nav, Mission& m) {
   m.half_widths = std::move(nav.half_widths);
 }
 
-// The GPS fixes within `span`; those outside listed in notes.unused_fixes with `why`,
-// but a GPS CSV's with `csv_refuses` (the exact-header navigation CSV: both gesmi's).
+// The GPS fixes within `span`; those outside listed in notes.unused_fixes with `why`.
 GpsLog read_gps(const Mission& m, const ImportInputs& inputs, std::pair<double, double> span, const std::string& why,
-                bool csv_refuses, ImportNotes& notes) {
+                ImportNotes& notes) {
   if (inputs.gps.empty()) return {};
   if (is_nmea(inputs.gps, inputs.gps_format)) return read_nmea_gps(inputs.gps, m, inputs, span, why, notes);
   std::ifstream in = open_input(inputs.gps);
-  return read_gps_csv(in, inputs.gps, span.first, span.second, csv_refuses ? nullptr : &notes.unused_fixes, why);
+  return read_gps_csv(in, inputs.gps, span.first, span.second, &notes.unused_fixes, why);
+}
+
+// The navigation on the grid over its readings and the fixes (nav_grid.h), into `m`.
+void take_grid(const std::string& nav_csv, NavOnGrid on_grid, Mission& m, ImportNotes& notes) {
+  notes.lines.push_back(nav_csv + ": " + on_grid.grid_note);
+  for (const std::string& line : fill_lines(on_grid.log.half_widths)) notes.lines.push_back(nav_csv + ": " + line);
+  move_nav(std::move(on_grid.log), m);
 }
 
 // A logger's export: the readings, then the fixes the navigation can place, then the
-// grid over both (nav_grid.h).
+// grid over both.
 GpsLog import_mapped(const std::string& nav_csv, const ImportInputs& inputs, Mission& m, ImportNotes& notes) {
   std::ifstream in = open_input(nav_csv);
   MappedNavLog mapped = read_mapped_nav(in, nav_csv, read_column_map(inputs.map, nav_map_schema(), true), m.model, m.epoch);
@@ -140,11 +147,23 @@ GpsLog import_mapped(const std::string& nav_csv, const ImportInputs& inputs, Mis
   const std::pair<double, double> span = usable_span(mapped.series, mapped.max_gap);
   const std::string why = "no attitude or depth reading within max_gap (" + format_number(mapped.max_gap) +
                           " s) of it, so nothing places the robot there (raise max_gap in " + inputs.map + ")";
-  GpsLog gps = read_gps(m, inputs, span, why, false, notes);
-  NavOnGrid on_grid = nav_on_grid(mapped.series, gps.time, m.model, mapped.max_gap, mapped.limit);
-  notes.lines.push_back(nav_csv + ": " + on_grid.grid_note);
-  for (const std::string& line : fill_lines(on_grid.log.half_widths)) notes.lines.push_back(nav_csv + ": " + line);
-  move_nav(std::move(on_grid.log), m);
+  GpsLog gps = read_gps(m, inputs, span, why, notes);
+  take_grid(nav_csv, nav_on_grid(mapped.series, gps.time, m.model, mapped.max_gap, mapped.limit), m, notes);
+  return gps;
+}
+
+// gesmi's navigation CSV: its rows carry every channel, and the fixes up to
+// kDefaultMaxGap before its first or after its last row extend the grid as a logger
+// export's (the DVL bridged, the other channels enclosed from the row nearest). A gap
+// between rows is the solver's to cross, whatever its length.
+GpsLog import_rows(const std::string& nav_csv, const ImportInputs& inputs, Mission& m, ImportNotes& notes) {
+  std::ifstream in = open_input(nav_csv);
+  const NavSeries series = series_of_rows(read_nav_csv(in, nav_csv), m.model, nav_csv);
+  const std::pair<double, double> span = usable_span(series, kDefaultMaxGap);
+  const std::string why = "more than " + format_number(kDefaultMaxGap) + " s before the first or after the last row of " +
+                          nav_csv + ", so nothing places the robot there";
+  GpsLog gps = read_gps(m, inputs, span, why, notes);
+  take_grid(nav_csv, nav_on_grid(series, gps.time, m.model, std::numeric_limits<double>::infinity(), ""), m, notes);
   return gps;
 }
 
@@ -155,14 +174,7 @@ Mission import_nav(const std::string& nav_csv, const ImportInputs& inputs, Impor
   Mission m;
   m.model = model_from(inputs);
   m.epoch = inputs.epoch;
-  GpsLog gps;
-  if (inputs.map.empty()) {
-    std::ifstream in = open_input(nav_csv);
-    move_nav(read_nav_csv(in, nav_csv), m);
-    gps = read_gps(m, inputs, {m.time.front(), m.time.back()}, "outside the navigation log's time span", true, notes);
-  } else {
-    gps = import_mapped(nav_csv, inputs, m, notes);
-  }
+  GpsLog gps = inputs.map.empty() ? import_rows(nav_csv, inputs, m, notes) : import_mapped(nav_csv, inputs, m, notes);
   if (inputs.origin) {
     m.origin = *inputs.origin;
   } else if (!gps.time.empty()) {

@@ -37,6 +37,7 @@ NavLog read_nav_csv(std::istream& in, const std::string& name) {
     for (std::size_t c = 0; c < 9; ++c) values[c]->push_back(csv.number(c));
     if (log.time.size() > 1) expect_increasing_time(csv, 0, log.time.back(), log.time[log.time.size() - 2], previous_line);
     previous_line = csv.line();
+    log.line.push_back(csv.line());
     for (const auto& [column, array] : bounds) {
       const double h = csv.number(column);
       if (h < 0.0) csv.fail(column, "a half-width must be >= 0");

@@ -19,6 +19,7 @@ namespace gesmi::io {
 struct NavLog {
   std::vector<double> time, roll, pitch, heading, vx, vy, vz, altitude, depth;
   NavHalfWidths half_widths;  // each empty unless its column was given
+  std::vector<std::size_t> line;  // each row's line in the file (read_nav_csv only)
 };
 
 /// Reads and validates a navigation CSV; FormatError "name:LINE: field: reason".

@@ -18,6 +18,11 @@ enum Channel { roll, pitch, heading, vx, vy, vz, altitude, depth, kChannels };
 // needs no reading nearby (the others are enclosed by their rate from the nearest one).
 bool bridged(int c) { return c == vx || c == vy || c == vz || c == altitude; }
 
+// The navigation log's arrays, in nav_channels() order.
+constexpr std::vector<double> NavLog::*kValues[kChannels] = {&NavLog::roll, &NavLog::pitch, &NavLog::heading,
+                                                              &NavLog::vx,   &NavLog::vy,    &NavLog::vz,
+                                                              &NavLog::altitude, &NavLog::depth};
+
 std::string seconds_text(double s) { return format_number(std::round(s * 1000.0) / 1000.0) + " s"; }
 
 std::string channel_name(int c) { return std::string(nav_channels()[static_cast<std::size_t>(c)].name); }
@@ -118,9 +123,6 @@ void enclose_on_grid(const NavSeries& s, int c, const std::vector<double>& grid,
   // the log gave its own.
   const std::size_t own = static_cast<std::size_t>(std::count(at.own_reading.begin(), at.own_reading.end(), 1));
   if (own < grid.size() || s.given[static_cast<std::size_t>(c)]) log.half_widths.*channel.half_widths = std::move(at.half_width);
-  static constexpr std::vector<double> NavLog::*kValues[kChannels] = {
-      &NavLog::roll, &NavLog::pitch, &NavLog::heading, &NavLog::vx, &NavLog::vy, &NavLog::vz, &NavLog::altitude,
-      &NavLog::depth};
   log.*kValues[c] = std::move(at.value);
   if (own == grid.size()) return;
   ChannelFill fill{rate_name(c), 0, 0, 0, r.time.front(), r.time.back()};
@@ -162,6 +164,29 @@ std::string grid_note(const NavSeries& s, const std::vector<double>& grid, const
 }
 
 }  // namespace
+
+NavSeries series_of_rows(NavLog rows, const SensorModel& model, const std::string& name) {
+  NavSeries s;
+  s.name = name;
+  s.rows = rows.time.size();
+  for (std::size_t c = 0; c < kChannels; ++c) {
+    ChannelReadings& r = s.channel[c];
+    r.time = rows.time;
+    r.value = std::move(rows.*kValues[c]);
+    const std::vector<double>& given = rows.half_widths.*nav_channels()[c].half_widths;
+    s.given[c] = !given.empty();
+    if (s.given[c]) {
+      r.half_width = given;
+    } else {
+      r.half_width.reserve(r.value.size());
+      for (const double v : r.value) r.half_width.push_back(model_half_width(model, c, v));
+    }
+    s.line[c] = rows.line;
+  }
+  s.row_time = std::move(rows.time);
+  s.row_line = std::move(rows.line);
+  return s;
+}
 
 std::vector<std::string> fill_lines(const NavHalfWidths& half_widths) {
   std::vector<std::string> out;

@@ -37,6 +37,15 @@ struct NavSeries {
   std::array<bool, 8> given{};
 };
 
+/// Longest time without a reading of any navigation sensor unless a map's `max_gap`
+/// says otherwise (s); also how far before the first and after the last row of gesmi's
+/// navigation CSV a fix is placed.
+inline constexpr double kDefaultMaxGap = 60.0;
+
+/// gesmi's navigation CSV (every channel on every row) as a series: each reading's bound
+/// its own half-width column's, or the model's.
+NavSeries series_of_rows(NavLog rows, const SensorModel& model, const std::string& name);
+
 /// A GPS fix the import could not use, and why.
 struct UnusedFix {
   std::string where;  // "gps.nmea:12"

@@ -25,6 +25,19 @@ const NavChannel& nav_channel(std::string_view name) {
   throw std::logic_error("no navigation channel " + std::string(name));
 }
 
+double model_half_width(const SensorModel& model, std::size_t channel, double value) {
+  switch (channel) {
+    case 0: return model.roll;
+    case 1: return model.pitch;
+    case 2: return model.heading;
+    case 3:
+    case 4:
+    case 5: return dvl_bound(model, value);
+    case 6: return model.altitude;
+    default: return depth_bound(model, value);
+  }
+}
+
 std::optional<std::size_t> longest_gap(const std::vector<double>& time) {
   if (time.size() < 2) return std::nullopt;
   std::vector<double> steps(time.size() - 1);

@@ -74,6 +74,9 @@ std::optional<std::size_t> longest_gap(const std::vector<double>& time);
 const std::array<NavChannel, 8>& nav_channels();
 /// The channel of that name (one of nav_channels()).
 const NavChannel& nav_channel(std::string_view name);
+/// The model's bound on a reading `value` of nav_channels()[channel], rounded up as the
+/// solver computes it (SensorBoxes): the per-sample half-width an importer writes.
+double model_half_width(const SensorModel& model, std::size_t channel, double value);
 
 struct Mission {
   // Navigation, N samples.

@@ -1008,7 +1008,8 @@ def test_nmea_fixes_outside_the_navigation_are_skipped_and_counted(sim, logger, 
     """With the logger's map, a fix is used when every attitude and depth channel has a
     reading within max_gap (60 s) of it: the mission reaches the fixes before and after
     the log, and a fix farther out is skipped, counted and named in a warning. With the
-    exact-header navigation CSV, the fixes outside its time span are skipped."""
+    exact-header navigation CSV, the mission reaches the fixes up to 60 s before its first
+    or after its last row the same way."""
     positions = fix_positions(sim, 5)
     seconds = (-60.0, -0.5, 42.0, 600.5, 3600.0)  # the log spans 0 .. 600 s
     lines = []
@@ -1066,24 +1067,29 @@ def test_nmea_fixes_outside_the_navigation_are_skipped_and_counted(sim, logger, 
     assert filled == expected
     assert (filled["vx"]["before_first_reading"], filled["vx"]["after_last_reading"]) == (2, 1)
     # The exact-header navigation CSV (gesmi's export of the imported logger mission, 0 ..
-    # 600 s): no usable span beyond its rows; the fixes outside them skipped and named.
+    # 600 s): the fixes up to 60 s before or after its rows extend the grid; the one
+    # farther out is named.
     assert reimported.result.returncode == 0, reimported.result.stderr
     folder = str(tmp_path / "csv")
     assert run_gesmi("export", reimported.out, "-o", folder).returncode == 0
     nav = os.path.join(folder, "nav.csv")
     with open(nav) as f:
         nav_times = [float(row[0]) for row in list(csv.reader(f))[1:]]
-    inside = [s for s in seconds if nav_times[0] <= s <= nav_times[-1]]
-    assert inside == [42.0]
+    within = [s for s in seconds if nav_times[0] - 60.0 <= s <= nav_times[-1] + 60.0]
+    assert within == used
     r = run_gesmi("import", "nav", nav, "--gps", nmea, "--epoch", iso_z(DEFAULT_EPOCH), "--origin", "%r,%r" % sim.origin,
                   "-o", str(tmp_path / "csv.h5"))
     assert r.returncode == 0, r.stderr
-    assert nmea_counts(r.stdout) == (len(inside), 0, 0, len(seconds) - len(inside))
-    assert [w.split(": warning: ")[0] for w in r.stderr.splitlines()] == [
-        "%s:%d" % (nmea, line_of[s]) for s in seconds if s not in inside], r.stderr
+    assert nmea_counts(r.stdout) == (len(within), 0, 0, len(seconds) - len(within))
+    warnings = r.stderr.splitlines()
+    assert [w.split(": warning: ")[0] for w in warnings] == [
+        "%s:%d" % (nmea, line_of[s]) for s in seconds if s not in within], r.stderr
+    assert all("more than 60 s before the first or after the last row of %s" % nav in w for w in warnings), r.stderr
     m = gesmi.read_mission(str(tmp_path / "csv.h5"))
-    np.testing.assert_array_equal(m.time, nav_times)
-    np.testing.assert_allclose(m.gps_time, inside, rtol=0, atol=1e-9)
+    outside = [s for s in within if s < nav_times[0] or s > nav_times[-1]]
+    np.testing.assert_array_equal(m.time, sorted(nav_times + outside))
+    np.testing.assert_allclose(m.gps_time, within, rtol=0, atol=1e-9)
+    assert "vx, vy, vz: bridged by surface_max_speed at 3 samples without a reading: 2 before its first reading" in r.stdout
 
 
 # ----------------------------------------------------------------------------------------

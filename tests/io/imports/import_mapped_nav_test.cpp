@@ -1,15 +1,19 @@
 // Logger exports through column maps (io/imports/column_map.h, import_mapped_nav.h):
-// layouts, units, the grid, channels between readings, gaps, and each refusal.
+// layouts, units, the grid, channels between readings, gaps, and each refusal; and
+// gesmi's navigation CSV on the same grid (nav_grid.h).
 #include "io/imports/import_mapped_nav.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
 #include "io/format_error.h"
+#include "io/imports/import_nav_csv.h"
+#include "solver/interval/rounding.h"
 #include "tests/support/run_command.h"
 
 namespace gesmi::io {
@@ -236,6 +240,67 @@ TEST(MappedNav, TheGridSpansTheSurfaceBeforeAndAfterTheDvlAndTheFixes) {
   ASSERT_FALSE(lines.empty());
   EXPECT_EQ(lines[0], "vx, vy, vz: bridged by surface_max_speed at 5 samples without a reading: 3 before its first "
                       "reading (2 s), 2 after its last reading (4 s)");
+}
+
+TEST(NavRows, TheFixesOutsideTheRowsExtendTheGridAndTheRowsStayAsRead) {
+  // Rows at 10, 11 and 12 s (depth 50 m, below the surface layer), the depth's bound
+  // given per row; fixes at -50 s and 72 s (60 s from the first and last rows) and
+  // 11.5 s (between rows: no sample of its own).
+  const std::string csv =
+      "time,roll,pitch,heading,vx,vy,vz,altitude,depth,depth_halfwidth\n"
+      "10,0.01,0.02,3.1,1,0,0,5,50,0.25\n"
+      "11,0.01,0.02,-3.1,1.2,0.1,0,5,50.5,0.25\n"
+      "12,0.01,0.02,3.0,1,0,0,5,51,0.5\n";
+  const SensorModel model;
+  const auto series = [&] {
+    std::istringstream in(csv);
+    return series_of_rows(read_nav_csv(in, "nav.csv"), model, "nav.csv");
+  };
+  const NavSeries s = series();
+  const auto [first, last] = usable_span(s, kDefaultMaxGap);
+  EXPECT_EQ(first, -50.0);
+  EXPECT_EQ(last, 72.0);
+  const double inf = std::numeric_limits<double>::infinity();
+
+  // Without a fix outside, the rows as read: the model's bounds stay the model's.
+  const NavLog rows = nav_on_grid(s, std::vector<double>{11.5}, model, inf, "").log;
+  EXPECT_EQ(rows.time, (std::vector<double>{10.0, 11.0, 12.0}));
+  EXPECT_EQ(rows.heading, (std::vector<double>{3.1, -3.1, 3.0}));
+  EXPECT_EQ(rows.vy, (std::vector<double>{0.0, 0.1, 0.0}));
+  EXPECT_EQ(rows.half_widths.depth, (std::vector<double>{0.25, 0.25, 0.5}));
+  EXPECT_TRUE(rows.half_widths.roll.empty());
+  EXPECT_TRUE(rows.half_widths.vx.empty());
+  EXPECT_TRUE(fill_lines(rows.half_widths).empty());
+
+  const NavOnGrid g = nav_on_grid(series(), std::vector<double>{-50.0, 11.5, 72.0}, model, inf, "");
+  const NavLog& log = g.log;
+  ASSERT_EQ(log.time, (std::vector<double>{-50.0, 10.0, 11.0, 12.0, 72.0}));
+  // The DVL bridged at the fixes: 0 +- surface_max_speed; its rows keep their model bound.
+  for (const std::size_t k : {0u, 4u}) {
+    EXPECT_EQ(log.vx[k], 0.0);
+    EXPECT_EQ(log.half_widths.vx[k], model.surface_max_speed);
+  }
+  EXPECT_EQ(log.vx[2], 1.2);
+  EXPECT_EQ(log.half_widths.vx[2], dvl_bound(model, 1.2));
+  // The other channels from the nearest row, widened by their rate over 60 s (upward).
+  const auto holds = [](double value, double half_width, double lo, double hi) {
+    return value - half_width <= lo && value + half_width >= hi;
+  };
+  const double turn = mul_up(model.max_attitude_rate, 60.0);
+  EXPECT_TRUE(holds(log.roll[0], log.half_widths.roll[0], 0.01 - model.roll - turn, 0.01 + model.roll + turn));
+  EXPECT_TRUE(holds(log.heading[4], log.half_widths.heading[4], 3.0 - model.heading - turn, 3.0 + model.heading + turn));
+  const double sink = mul_up(model.max_depth_rate, 60.0);
+  EXPECT_TRUE(holds(log.depth[4], log.half_widths.depth[4], 51.0 - 0.5 - sink, 51.0 + 0.5 + sink));
+  EXPECT_NEAR(log.half_widths.depth[4], 0.5 + sink, 1e-12);
+  EXPECT_EQ(log.half_widths.depth[1], 0.25);
+  const std::vector<std::string> lines = fill_lines(log.half_widths);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines[0], "vx, vy, vz: bridged by surface_max_speed at 2 samples without a reading: 1 before its first "
+                      "reading (10 s), 1 after its last reading (12 s)");
+  EXPECT_NE(g.grid_note.find("grid: the 3 rows with a DVL reading, of 3, and 2 samples before and after them; longest "
+                             "step 60 s (from -50 s to 10 s, a fix's time)"),
+            std::string::npos)
+      << g.grid_note;
 }
 
 }  // namespace
