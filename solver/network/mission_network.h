@@ -61,7 +61,7 @@ std::vector<std::uint64_t> allowed_mines_of_marks(const Mission& mission, std::s
 TubeDomains initial_domains(const Mission& mission, const SensorModel& model, const MissionNetwork& network);
 
 /// The two halves of initial_domains: what the sensors give (increments and depth, each
-/// step under its regime, under the mission's zone-wide frame margins; frame_margins.h builds them for
+/// step under its regime, under the mission's zone-wide frame margins; sensor_priors.h builds them for
 /// per-sample margins), which does not depend on the fixes and marks, and the network's own priors
 /// (fixes on sample times, unbounded mines, candidate mines).
 TubeDomains sensor_domains(const Mission& mission, const SensorModel& model);

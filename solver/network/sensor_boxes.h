@@ -78,7 +78,7 @@ class SensorBoxes {
   Vec3I step_velocity(const SampleBoxes& a, const SampleBoxes& b, std::size_t k) const;
   /// Upper bounds of the integrals of |w_north| and |w_east| over a step, as the step
   /// model sees w: what a further turn of the heading widens the increment by
-  /// (frame_margins.h).
+  /// (sensor_priors.h).
   struct StepTurn {
     double north = 0.0, east = 0.0;
     /// Trapezoid steps that also take the rate hull: when the two boxes do not meet,

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "solver/network/frame_margins.h"
+#include "solver/network/sensor_priors.h"
 #include "solver/network/inconsistency_text.h"
 #include "solver/solve/warm_start.h"
 

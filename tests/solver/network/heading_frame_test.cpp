@@ -13,6 +13,7 @@
 #include "solver/mission/frame_scale.h"
 #include "solver/mission/meridian_convergence.h"
 #include "solver/network/frame_margins.h"
+#include "solver/network/sensor_priors.h"
 #include "solver/network/sensor_boxes.h"
 #include "tests/support/smooth_truth.h"
 

@@ -19,6 +19,7 @@
 #include <random>
 
 #include "solver/network/frame_margins.h"
+#include "solver/network/sensor_priors.h"
 #include "solver/network/sensor_boxes.h"
 #include "solver/network/sensor_kernel.h"
 #include "solver/sim/simulator.h"

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "solver/interval/rounding.h"
-#include "solver/network/frame_margins.h"
+#include "solver/network/sensor_priors.h"
 #include "solver/network/step_regimes.h"
 
 namespace gesmi {
