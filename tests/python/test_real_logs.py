@@ -1090,6 +1090,19 @@ def test_nmea_fixes_outside_the_navigation_are_skipped_and_counted(sim, logger, 
     np.testing.assert_array_equal(m.time, sorted(nav_times + outside))
     np.testing.assert_allclose(m.gps_time, within, rtol=0, atol=1e-9)
     assert "vx, vy, vz: bridged by surface_max_speed at 3 samples without a reading: 2 before its first reading" in r.stdout
+    # The same fixes as gesmi's GPS CSV: the same mission, the same warning.
+    gps_csv = str(tmp_path / "gps.csv")
+    with open(gps_csv, "w") as f:
+        f.write("time,longitude,latitude\n")
+        for s, (lat, lon) in zip(seconds, positions):
+            f.write("%r,%r,%r\n" % (s, lon, lat))
+    r = run_gesmi("import", "nav", nav, "--gps", gps_csv, "--origin", "%r,%r" % sim.origin, "-o", str(tmp_path / "csv2.h5"))
+    assert r.returncode == 0, r.stderr
+    assert [w.split(": warning: ")[0] for w in r.stderr.splitlines()] == [
+        "%s:%d" % (gps_csv, 2 + seconds.index(s)) for s in seconds if s not in within], r.stderr
+    m2 = gesmi.read_mission(str(tmp_path / "csv2.h5"))
+    np.testing.assert_array_equal(m2.time, m.time)
+    np.testing.assert_allclose(m2.gps_time, within, rtol=0, atol=1e-9)
 
 
 # ----------------------------------------------------------------------------------------
