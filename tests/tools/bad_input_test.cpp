@@ -12,6 +12,7 @@
 #include <map>
 
 #include "tests/support/h5py_edits.h"
+#include "tests/support/paths.h"
 #include "tests/support/run_command.h"
 
 namespace gesmi::test {
@@ -119,6 +120,20 @@ TEST(BadInput, ImportNavNamesFileLineFieldAndReason) {
        {"folder @/no/such/folder does not exist"}},
   };
   for (const Case& c : cases) run_case(c);
+}
+
+// Integers outside an option's range are refused, never wrapped or truncated into it.
+TEST(BadInput, IntegerOptionsOutsideTheirRangeAreRefused) {
+  const std::string scenario = source_dir() + "/missions/localization/seed000_asymmetric.yaml";
+  const std::vector<Case> cases = {
+      {"outliers below int", {}, {"simulate", "--seed", "1", "--duration", "600", "--outliers", "-2147483649"}, {"--outliers must be >= 0"}},
+      {"mines beyond int", {}, {"simulate", "--seed", "1", "--duration", "600", "--mines", "4294967297"}, {"--mines must be between 0 and 64"}},
+      {"bursts beyond int", {}, {"simulate", "--seed", "1", "--duration", "600", "--bursts", "4294967297"}, {"--bursts must be between 0 and 1000"}},
+      {"integer beyond long", {}, {"simulate", "--seed", "1", "--outliers", "99999999999999999999"}, {"--outliers: expected an integer"}},
+      {"localize seed negative", {}, {"localize", scenario, "--simulate", "--seed", "-1"}, {"--seed: must be between 0 and 4294967295"}},
+      {"localize seed beyond 32 bits", {}, {"localize", scenario, "--simulate", "--seed", "4294967296"}, {"--seed: must be between 0 and 4294967295"}},
+  };
+  for (const Case& c : cases) run_case(c, c.args[0] == std::string("localize") ? "out" : "out.h5");
 }
 
 TEST(BadInput, ImportGesmiTxtNamesLineFieldAndReason) {

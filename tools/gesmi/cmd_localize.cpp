@@ -4,6 +4,7 @@
 // pose instead (the generator of missions/localization/).
 
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -47,7 +48,10 @@ std::vector<std::size_t> parse_indices(std::string_view option, const std::strin
 int simulate(LocalizationProblem problem, const po::variables_map& values) {
   if (!problem.truth) throw UsageError("--simulate needs a 'truth' pose in the scenario");
   MeasurementSimulationOptions options;
-  options.seed = static_cast<std::uint32_t>(parse_integer("--seed", values["seed"].as<std::string>()));
+  const long long seed = parse_integer("--seed", values["seed"].as<std::string>());
+  if (seed < 0 || seed > std::numeric_limits<std::uint32_t>::max())
+    throw UsageError("--seed: must be between 0 and " + std::to_string(std::numeric_limits<std::uint32_t>::max()));
+  options.seed = static_cast<std::uint32_t>(seed);
   options.error_fraction = parse_non_negative("--error-fraction", values["error-fraction"].as<std::string>());
   if (options.error_fraction >= 1.0) throw UsageError("--error-fraction must be below 1");
   if (values.count("range-outliers"))

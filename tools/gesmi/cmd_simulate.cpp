@@ -1,5 +1,6 @@
 // gesmi simulate: a reference-like mission with ground truth.
 
+#include <algorithm>
 #include <cstdio>
 
 #include "io/output/output_set.h"
@@ -42,7 +43,7 @@ int run_simulate(std::span<const std::string> args) {
       ("mines", po::value<std::string>()->default_value("6"), "number of mines (0..64)")
       ("missed", po::value<std::string>()->default_value("0"), "probability that a detection is missed")
       ("unassociated", po::value<std::string>()->default_value("0"), "probability that a mark has no mine number")
-      ("outliers", po::value<std::string>()->default_value("0"), "number of corrupted marks")
+      ("outliers", po::value<std::string>()->default_value("0"), "number of corrupted marks (every mark when there are fewer)")
       ("surface", po::value<std::string>()->default_value("0"),
        "seconds at the surface before the dive and after surfacing, with GPS fixes at 1 Hz (0: submerged throughout)")
       ("wave-height", po::value<std::string>()->default_value("0"), "height of the waves at the surface (m): heave and sway")
@@ -66,15 +67,15 @@ int run_simulate(std::span<const std::string> args) {
     throw UsageError("--errors: expected uniform, worst-case, at-samples, drifting or corners, got " + io::quoted_input(errors));
   o.duration = parse_double("--duration", v["duration"].as<std::string>());
   o.rate = parse_double("--rate", v["rate"].as<std::string>());
-  o.mines = static_cast<int>(parse_integer("--mines", v["mines"].as<std::string>()));
+  o.mines = parse_int("--mines", v["mines"].as<std::string>());
   o.missed = parse_double("--missed", v["missed"].as<std::string>());
   o.unassociated = parse_double("--unassociated", v["unassociated"].as<std::string>());
-  o.outliers = static_cast<int>(parse_integer("--outliers", v["outliers"].as<std::string>()));
+  o.outliers = parse_int("--outliers", v["outliers"].as<std::string>());
   o.surface = parse_double("--surface", v["surface"].as<std::string>());
   o.wave_height = parse_double("--wave-height", v["wave-height"].as<std::string>());
   o.wave_period = parse_double("--wave-period", v["wave-period"].as<std::string>());
   o.surface_dvl = v.count("surface-dvl") > 0;
-  o.bursts = static_cast<int>(parse_integer("--bursts", v["bursts"].as<std::string>()));
+  o.bursts = parse_int("--bursts", v["bursts"].as<std::string>());
   o.burst_jerk = parse_double("--burst-jerk", v["burst-jerk"].as<std::string>());
   // Each reason starts with the option it is about ("missed must be ...").
   if (const std::string why = o.validate(); !why.empty()) throw UsageError("--" + why);
@@ -94,17 +95,20 @@ int run_simulate(std::span<const std::string> args) {
   io::write_mission(mission, output);
   outputs.commit();
   progress.finish();
+  // The marks corrupted: --outliers of them, or every mark when there are fewer.
+  const auto outliers = static_cast<std::size_t>(
+      std::count(mission.truth_marks_outlier.begin(), mission.truth_marks_outlier.end(), 1));
   CommandReport report("simulate", v);
   if (report.enabled()) {
     report.inputs(v, {"config"});
     report.output(output);
     report["mission"] = io::mission_json(mission);
     report["simulation"] = {{"seed", o.seed}, {"errors", errors}, {"missed_marks", mission.truth_missed_marks.size() / 3},
-                            {"outliers", o.outliers}};
+                            {"outliers", outliers}};
   } else {
-    std::printf("wrote %s: %zu samples over %.1f s, %d mines, %zu marks (%zu missed, %d outliers)\n", output.c_str(),
+    std::printf("wrote %s: %zu samples over %.1f s, %d mines, %zu marks (%zu missed, %zu outliers)\n", output.c_str(),
                 mission.size(), mission.time.back(), mission.mine_count, mission.mark_count(),
-                mission.truth_missed_marks.size() / 3, o.outliers);
+                mission.truth_missed_marks.size() / 3, outliers);
   }
   return report.finish(kExitOk);
 }
