@@ -256,6 +256,9 @@ TEST(MissionFile, ReportsMissingDatasetsWrongShapesAndBadAttributes) {
       {"del f['/model'].attrs['heading']", "/model: missing attribute heading"},
       {"f['/model'].attrs['sonar_side'] = np.bytes_(b'left')", "sonar_side"},
       {"f.attrs['format'] = np.bytes_(b'other')", "not a gesmi mission file"},
+      // A per-sample bound with no values is not "no bound given": it is refused.
+      {"f['/nav/half_widths/depth'] = np.zeros(0)", "/nav/half_widths/depth: expected 3001 values (one per sample), found 0"},
+      {"f['/nav/half_widths/roll'] = np.full(10, 1e-3)", "/nav/half_widths/roll: expected 3001 values (one per sample), found 10"},
   };
   const std::string path = test::temp_folder("edits") + "/m.h5";
   write_mission(sample_mission(), path);
