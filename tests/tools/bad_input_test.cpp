@@ -136,6 +136,20 @@ TEST(BadInput, IntegerOptionsOutsideTheirRangeAreRefused) {
   for (const Case& c : cases) run_case(c, c.args[0] == std::string("localize") ? "out" : "out.h5");
 }
 
+// Options that cannot go together are refused before any input is read (the --from
+// result here is not even a result).
+TEST(BadInput, SolveOptionsThatCannotGoTogetherAreRefusedFirst) {
+  const std::string mission = simulated_mission();
+  const std::vector<Case> cases = {
+      {"from with max-outliers", {}, {"solve", mission, "--from", mission, "--max-outliers", "1"},
+       {"--from and --max-outliers cannot be combined"}},
+      {"both outlier modes", {}, {"solve", mission, "--max-outliers", "1", "--minimal-outliers", "1"},
+       {"--max-outliers and --minimal-outliers cannot be combined"}},
+      {"trust-gps alone", {}, {"solve", mission, "--trust-gps"}, {"--trust-gps goes with --max-outliers or --minimal-outliers"}},
+  };
+  for (const Case& c : cases) run_case(c);
+}
+
 TEST(BadInput, ImportGesmiTxtNamesLineFieldAndReason) {
   const Case cases[] = {
       {"empty log", {{"log.txt", ""}}, {"import", "gesmi-txt", "@/log.txt"}, {"@/log.txt:1: no data row (rows of 21 numbers"}},

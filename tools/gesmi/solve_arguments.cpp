@@ -53,9 +53,12 @@ SolveOptions parse_solve_options(const po::variables_map& v) {
     o.outlier_mode = name == "max-outliers" ? OutlierMode::relaxed : OutlierMode::minimal;
   }
   o.trust_gps = v.count("trust-gps") > 0;
-  // The warm rerun's earlier result is read later: its option stands for it here.
-  if (v.count("from") && o.max_outliers >= 0) throw UsageError("--from and --max-outliers cannot be combined");
-  if (const std::string why = o.validate(); !why.empty()) throw UsageError("--" + why);
+  // The warm rerun's earlier result is read later: a placeholder stands for it in the
+  // check, and the caller sets the real one.
+  static const MissionSolution kEarlierResult;
+  SolveOptions checked = o;
+  if (v.count("from")) checked.warm_from = &kEarlierResult;
+  if (const std::string why = checked.validate(); !why.empty()) throw UsageError("--" + why);
   return o;
 }
 
