@@ -191,9 +191,16 @@ void read_truth_datasets(const H5File& f, const std::string& path, Mission& m,
   }
   if (f.has("/truth/mines")) m.truth_mines = f.read_doubles("/truth/mines", 2);
   if (f.has("/truth/missed_marks")) m.truth_missed_marks = f.read_doubles("/truth/missed_marks", 2);
-  if (f.has("/truth/marks_outlier")) m.truth_marks_outlier = f.read_ints("/truth/marks_outlier", 1);
-  if (f.has("/truth/marks_mine")) m.truth_marks_mine = f.read_ints("/truth/marks_mine", 1);
-  if (f.has("/truth/gps_outlier")) m.truth_gps_outlier = f.read_ints("/truth/gps_outlier", 1);
+  // Each per-mark or per-fix array has their rows when present, none included: an empty
+  // one would read as absent.
+  const auto per_row = [&](const char* dataset, std::size_t rows, std::vector<std::int32_t>& out) {
+    if (!f.has(dataset)) return;
+    out = f.read_ints(dataset, 1);
+    expect_size(out.size(), rows, path, dataset);
+  };
+  per_row("/truth/marks_outlier", m.mark_count(), m.truth_marks_outlier);
+  per_row("/truth/marks_mine", m.mark_count(), m.truth_marks_mine);
+  per_row("/truth/gps_outlier", m.gps_time.size(), m.truth_gps_outlier);
 }
 
 }  // namespace

@@ -259,6 +259,8 @@ TEST(MissionFile, ReportsMissingDatasetsWrongShapesAndBadAttributes) {
       // A per-sample bound with no values is not "no bound given": it is refused.
       {"f['/nav/half_widths/depth'] = np.zeros(0)", "/nav/half_widths/depth: expected 3001 values (one per sample), found 0"},
       {"f['/nav/half_widths/roll'] = np.full(10, 1e-3)", "/nav/half_widths/roll: expected 3001 values (one per sample), found 10"},
+      {"f.pop('/truth/marks_outlier', None)\nf['/truth/marks_outlier'] = np.zeros(0, dtype=np.int32)",
+       "/truth/marks_outlier: expected 2 rows, found 0"},
   };
   const std::string path = test::temp_folder("edits") + "/m.h5";
   write_mission(sample_mission(), path);
