@@ -325,6 +325,14 @@ Mission MissionReader::read(TruthReading truth) const {
   columns("/nav/velocity", velocity);
   m.altitude = f.read_doubles("/nav/altitude", 1);
   m.depth = f.read_doubles("/nav/depth", 1);
+  // A per-sample bound of another name would be ignored, its channel keeping the model's.
+  if (f.has_group("/nav/half_widths"))
+    for (const std::string& member : f.members("/nav/half_widths", 64)) {
+      const auto& channels = nav_channels();
+      if (std::none_of(channels.begin(), channels.end(), [&](const NavChannel& c) { return c.name == member; }))
+        throw FormatError(path + ": /nav/half_widths/" + member +
+                          ": not a navigation channel (roll, pitch, heading, vx, vy, vz, altitude or depth)");
+    }
   for (std::size_t i = 0; i < nav_channels().size(); ++i)
     if (const std::string name = half_width_dataset(nav_channels()[i]); f.has(name)) {
       std::vector<double> given = f.read_doubles(name, 1);

@@ -132,6 +132,27 @@ H5Handle H5File::open_dataset(const std::string& dataset) const {
   return d;
 }
 
+std::vector<std::string> H5File::members(const std::string& group, std::size_t limit) const {
+  const H5Handle g = open_plain_object(group);
+  if (!g.valid()) fail(group, "missing group");
+  if (H5Iget_type(g.get()) != H5I_GROUP) fail(group, "expected a group, found a dataset");
+  H5G_info_t info{};
+  if (H5Gget_info(g.get(), &info) < 0) fail(group, "cannot be read (damaged file?)");
+  if (info.nlinks > limit)
+    fail(group, "holds " + std::to_string(info.nlinks) + " members, more than the " + std::to_string(limit) + " gesmi reads");
+  std::vector<std::string> names;
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    const ssize_t size = H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+    if (size < 0 || static_cast<std::size_t>(size) > kMaxStringAttribute) fail(group, "a member's name cannot be read");
+    std::string name(static_cast<std::size_t>(size) + 1, '\0');
+    if (H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT) < 0)
+      fail(group, "a member's name cannot be read");
+    name.resize(static_cast<std::size_t>(size));
+    names.push_back(std::move(name));
+  }
+  return names;
+}
+
 H5Shape H5File::shape(const std::string& dataset) const { return shape_of(open_dataset(dataset).get(), dataset); }
 
 H5Shape H5File::shape_of(std::int64_t d, const std::string& dataset) const {

@@ -76,6 +76,9 @@ class H5File {
   bool has(const std::string& object) const { return kind(object) != H5Kind::missing; }
   /// True when `group` exists as a group; FormatError when it exists as something else.
   bool has_group(const std::string& group) const;
+  /// The names of the links in `group` (a plain group), in name order; FormatError when
+  /// it holds more than `limit` of them (a hostile file's millions).
+  std::vector<std::string> members(const std::string& group, std::size_t limit) const;
   /// Shape of a dataset; FormatError if missing, not a dataset, or not 1-D/2-D.
   H5Shape shape(const std::string& dataset) const;
 

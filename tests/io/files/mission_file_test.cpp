@@ -259,6 +259,10 @@ TEST(MissionFile, ReportsMissingDatasetsWrongShapesAndBadAttributes) {
       // A per-sample bound with no values is not "no bound given": it is refused.
       {"f['/nav/half_widths/depth'] = np.zeros(0)", "/nav/half_widths/depth: expected 3001 values (one per sample), found 0"},
       {"f['/nav/half_widths/roll'] = np.full(10, 1e-3)", "/nav/half_widths/roll: expected 3001 values (one per sample), found 10"},
+      {"f['/nav/half_widths/speed'] = np.zeros(3001)",
+       "/nav/half_widths/speed: not a navigation channel (roll, pitch, heading, vx, vy, vz, altitude or depth)"},
+      {"[f.create_dataset('/nav/half_widths/x%03d' % i, data=np.zeros(1)) for i in range(100)]",
+       "/nav/half_widths: holds 100 members, more than the 64 gesmi reads"},
       {"f.pop('/truth/marks_outlier', None)\nf['/truth/marks_outlier'] = np.zeros(0, dtype=np.int32)",
        "/truth/marks_outlier: expected 2 rows, found 0"},
   };
