@@ -3,6 +3,7 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -49,6 +50,11 @@ void keep_freed_memory_for_reuse() {
   mallopt(M_ARENA_MAX, 1);
 }
 
+// A file size limit (ulimit -f) makes the kernel kill a writer past it with SIGXFSZ,
+// silently and leaving its temporary file. Ignored, the write fails with EFBIG instead,
+// which every writer reports and cleans up after as it does a full disk.
+void fail_writes_past_the_file_size_limit() { std::signal(SIGXFSZ, SIG_IGN); }
+
 // Every message leaves through here: one line whatever it holds (control characters
 // and bytes that are not UTF-8 from paths or input are escaped; io/text/message_text.h).
 void report(const std::string& who, const std::string& message) {
@@ -77,6 +83,7 @@ int main(int argc, char** argv) {
   }
   const std::string who = "gesmi " + args[0];
   keep_freed_memory_for_reuse();
+  fail_writes_past_the_file_size_limit();
   gesmi::io::set_command_line(args);  // recorded in every file this run writes
   try {
     return found->run(std::span<const std::string>(args).subspan(1));
