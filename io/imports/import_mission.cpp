@@ -152,17 +152,23 @@ GpsLog import_mapped(const std::string& nav_csv, const ImportInputs& inputs, Mis
   return gps;
 }
 
-// gesmi's navigation CSV: its rows carry every channel, and the fixes up to
-// kDefaultMaxGap before its first or after its last row extend the grid as a logger
-// export's (the DVL bridged, the other channels enclosed from the row nearest). A gap
-// between rows is the solver's to cross, whatever its length.
+// gesmi's navigation CSV: its rows carry every channel and are the grid. The fixes up
+// to kDefaultMaxGap before its first or after its last row extend it as a logger
+// export's (the DVL bridged, the other channels enclosed from the row nearest); only
+// then are the rows turned into a series, which holds several times their memory. A
+// gap between rows is the solver's to cross, whatever its length.
 GpsLog import_rows(const std::string& nav_csv, const ImportInputs& inputs, Mission& m, ImportNotes& notes) {
   std::ifstream in = open_input(nav_csv);
-  const NavSeries series = series_of_rows(read_nav_csv(in, nav_csv), m.model, nav_csv);
-  const std::pair<double, double> span = usable_span(series, kDefaultMaxGap);
+  NavLog rows = read_nav_csv(in, nav_csv);
+  const double first = rows.time.front(), last = rows.time.back();
   const std::string why = "more than " + format_number(kDefaultMaxGap) + " s before the first or after the last row of " +
                           nav_csv + ", so nothing places the robot there";
-  GpsLog gps = read_gps(m, inputs, span, why, notes);
+  GpsLog gps = read_gps(m, inputs, {first - kDefaultMaxGap, last + kDefaultMaxGap}, why, notes);
+  if (std::none_of(gps.time.begin(), gps.time.end(), [&](double t) { return t < first || t > last; })) {
+    move_nav(std::move(rows), m);
+    return gps;
+  }
+  const NavSeries series = series_of_rows(std::move(rows), m.model, nav_csv);
   take_grid(nav_csv, nav_on_grid(series, gps.time, m.model, std::numeric_limits<double>::infinity(), ""), m, notes);
   return gps;
 }
