@@ -25,8 +25,12 @@ namespace {
 // simplified API's defaults here). libpng reports errors by longjmp to this frame: the
 // row buffer is made before setjmp (a jump back skips no destructor), and neither it nor
 // the two pointers are reassigned after setjmp.
+// libpng's default handlers print to stderr: gesmi's one line says what failed instead.
+[[noreturn]] void png_error_quietly(png_structp png, png_const_charp) { png_longjmp(png, 1); }
+void png_warning_quietly(png_structp, png_const_charp) {}
+
 bool write_rgb_png(std::FILE* file, const unsigned char* pixels, int width, int height, int stride) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, png_error_quietly, png_warning_quietly);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
   if (!info) {

@@ -123,6 +123,14 @@ TEST(OutputSafety, AFullDiskIsBadInputAndLeavesNothing) {
   EXPECT_NE(r.err.find(folder + "/r.h5"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find(".tmp-"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::is_empty(folder));
+  // A picture past the limit: one line too (libpng's own handlers would print another).
+  const std::string solved = temp_folder("outputs-full-result") + "/r.h5";
+  ASSERT_EQ(run_gesmi({"solve", mission(), "-o", solved}).exit_code, 0);
+  const std::string pictures = temp_folder("outputs-full-png");
+  const CommandResult png = run_shell("ulimit -f 16; $GESMI waterfall '" + solved + "' -o '" + pictures + "/w.png'");
+  EXPECT_EQ(png.exit_code, 2) << png.err;
+  EXPECT_EQ(line_count(png.err), 1) << png.err;
+  EXPECT_TRUE(fs::is_empty(pictures));
   // A real small file system, where this machine allows mounting one: filled at
   // different points (the result, then each sibling), and by other commands.
   const std::string tiny = temp_folder("outputs-tmpfs");
