@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "io/format_error.h"
+#include "io/input_file.h"
 
 // The whole of xxHash in this file (header-only mode): no shared library to load at
 // start-up, and the hashing loop inlined.
@@ -84,6 +85,7 @@ std::string Digest::hex() {
 }
 
 std::string sha256_of_file(const std::string& path) {
+  require_regular_file(path);
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) throw FormatError(path + ": cannot open the file (does it exist?)");
   Digest h(DigestKind::sha256);

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "io/format_error.h"
+#include "io/input_file.h"
 
 namespace gesmi::io {
 namespace {
@@ -49,6 +50,7 @@ void H5File::fail(const std::string& object, const std::string& reason) const {
 }
 
 H5File H5File::open_read(const std::string& path) {
+  require_regular_file(path);
   silence_hdf5();
   if (H5Fis_hdf5(path.c_str()) <= 0) {
     FILE* f = std::fopen(path.c_str(), "rb");

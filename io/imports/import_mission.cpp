@@ -8,6 +8,7 @@
 #include "io/text/csv_number.h"
 #include "io/format_error.h"
 #include "io/geodesy.h"
+#include "io/input_file.h"
 #include "io/imports/column_map.h"
 #include "io/imports/import_gps_csv.h"
 #include "io/imports/import_mapped_nav.h"
@@ -23,6 +24,7 @@ namespace gesmi::io {
 namespace {
 
 std::ifstream open_input(const std::string& path) {
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FormatError(path + ": cannot open the file (does it exist?)");
   return in;

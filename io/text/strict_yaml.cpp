@@ -2,13 +2,13 @@
 
 #include <yaml-cpp/eventhandler.h>
 
-#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <vector>
 
 #include "io/format_error.h"
+#include "io/input_file.h"
 #include "io/text/message_text.h"
 
 namespace gesmi::io {
@@ -108,8 +108,7 @@ YAML::Node load_strict_yaml(const std::string& text, const std::string& source) 
 }
 
 YAML::Node load_strict_yaml_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw FormatError(path + ": is a folder, expected a YAML file");
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FormatError(path + ": cannot open the file (does it exist?)");
   std::ostringstream text;

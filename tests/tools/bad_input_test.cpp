@@ -4,6 +4,7 @@
 // exist afterwards and no temporary file is left beside it.
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -148,6 +149,28 @@ TEST(BadInput, SolveOptionsThatCannotGoTogetherAreRefusedFirst) {
       {"trust-gps alone", {}, {"solve", mission, "--trust-gps"}, {"--trust-gps goes with --max-outliers or --minimal-outliers"}},
   };
   for (const Case& c : cases) run_case(c);
+}
+
+// Through the gesmi command: every kind of reader refuses a pipe at once (a reader that
+// opened it would wait for a writer that never comes; the test's timeout would end it).
+TEST(BadInput, EveryReaderRefusesAPipeAndADevice) {
+  const std::string folder = temp_folder("input-pipe");
+  const std::string pipe = folder + "/pipe";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  const std::vector<std::vector<std::string>> commands = {
+      {"import", "nav", pipe, "--origin", "48,-4", "-o", folder + "/m.h5"},
+      {"import", "gesmi-txt", "/dev/urandom", "-o", folder + "/m.h5"},
+      {"solve", pipe, "-o", folder + "/r.h5"},
+      {"kalman", "/dev/zero", "-o", folder + "/k.h5"},
+      {"localize", "/dev/zero", "-o", folder + "/out"},
+      {"waterfall", pipe, "-o", folder + "/w.png"},
+  };
+  for (const auto& args : commands) {
+    const CommandResult r = run_gesmi(args);
+    EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(", not a file: gesmi reads its inputs from files"), std::string::npos) << r.err;
+  }
 }
 
 TEST(BadInput, ImportGesmiTxtNamesLineFieldAndReason) {

@@ -88,7 +88,7 @@ TEST(StrictYaml, FileErrorsNameThePath) {
     load_strict_yaml_file("/");
     ADD_FAILURE();
   } catch (const FormatError& e) {
-    EXPECT_EQ(std::string(e.what()), "/: is a folder, expected a YAML file");
+    EXPECT_EQ(std::string(e.what()), "/: is a folder, not a file");
   }
 }
 
