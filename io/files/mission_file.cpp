@@ -335,12 +335,10 @@ Mission MissionReader::read(TruthReading truth) const {
     }
   for (std::size_t i = 0; i < nav_channels().size(); ++i)
     if (const std::string name = half_width_dataset(nav_channels()[i]); f.has(name)) {
-      std::vector<double> given = f.read_doubles(name, 1);
-      // (an empty dataset would otherwise read as "no per-sample bounds": the model's)
-      if (given.size() != m.time.size())
-        throw FormatError(path + ": " + name + ": expected " + std::to_string(m.time.size()) +
-                          " values (one per sample), found " + std::to_string(given.size()));
-      m.half_widths.*nav_channels()[i].half_widths = std::move(given);
+      m.half_widths.*nav_channels()[i].half_widths = f.read_doubles(name, 1);
+      // (checked here, where the dataset is known to be present: an empty one would
+      // read as no bounds given, the model's)
+      expect_size((m.half_widths.*nav_channels()[i].half_widths).size(), m.time.size(), path, name);
       m.half_widths.fill[i] = read_fill(f, name, m.time.size());
       m.half_widths.fill_recorded = version >= 4;
     }

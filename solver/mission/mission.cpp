@@ -26,16 +26,13 @@ const NavChannel& nav_channel(std::string_view name) {
 }
 
 double model_half_width(const SensorModel& model, std::size_t channel, double value) {
-  switch (channel) {
-    case 0: return model.roll;
-    case 1: return model.pitch;
-    case 2: return model.heading;
-    case 3:
-    case 4:
-    case 5: return dvl_bound(model, value);
-    case 6: return model.altitude;
-    default: return depth_bound(model, value);
-  }
+  const auto bounds = nav_channels()[channel].half_widths;
+  if (bounds == &NavHalfWidths::roll) return model.roll;
+  if (bounds == &NavHalfWidths::pitch) return model.pitch;
+  if (bounds == &NavHalfWidths::heading) return model.heading;
+  if (bounds == &NavHalfWidths::altitude) return model.altitude;
+  if (bounds == &NavHalfWidths::depth) return depth_bound(model, value);
+  return dvl_bound(model, value);  // vx, vy, vz
 }
 
 std::optional<std::size_t> longest_gap(const std::vector<double>& time) {

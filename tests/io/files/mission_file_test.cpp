@@ -257,8 +257,8 @@ TEST(MissionFile, ReportsMissingDatasetsWrongShapesAndBadAttributes) {
       {"f['/model'].attrs['sonar_side'] = np.bytes_(b'left')", "sonar_side"},
       {"f.attrs['format'] = np.bytes_(b'other')", "not a gesmi mission file"},
       // A per-sample bound with no values is not "no bound given": it is refused.
-      {"f['/nav/half_widths/depth'] = np.zeros(0)", "/nav/half_widths/depth: expected 3001 values (one per sample), found 0"},
-      {"f['/nav/half_widths/roll'] = np.full(10, 1e-3)", "/nav/half_widths/roll: expected 3001 values (one per sample), found 10"},
+      {"f['/nav/half_widths/depth'] = np.zeros(0)", "/nav/half_widths/depth: expected 3001 rows, found 0"},
+      {"f['/nav/half_widths/roll'] = np.full(10, 1e-3)", "/nav/half_widths/roll: expected 3001 rows, found 10"},
       {"f['/nav/half_widths/speed'] = np.zeros(3001)",
        "/nav/half_widths/speed: not a navigation channel (roll, pitch, heading, vx, vy, vz, altitude or depth)"},
       {"[f.create_dataset('/nav/half_widths/x%03d' % i, data=np.zeros(1)) for i in range(100)]",
