@@ -12,7 +12,7 @@
 #include "solver/interval/rounding.h"
 #include "solver/mission/frame_scale.h"
 #include "solver/mission/meridian_convergence.h"
-#include "solver/network/frame_margins.h"
+#include "solver/network/frame/frame_margins.h"
 
 namespace gesmi::io {
 
@@ -114,7 +114,7 @@ void fill_local_gps(Mission& m, const std::string& source) {
     }
   }
   // The heading's margin holds anywhere in the frame's zone: the solver bounds it
-  // again, per sample, over the tube it solved (solver/network/frame_margins.h).
+  // again, per sample, over the tube it solved (solver/network/frame/frame_margins.h).
   m.heading_frame_margin = meridian_convergence_within(m.origin.latitude, kLocalFrameZone);
   // The frame's scale along a path anywhere in the zone (narrowed per sample by the
   // solve like the heading's), and the surface point's speed at the deepest the

@@ -10,7 +10,7 @@
 
 #include <string>
 
-#include "solver/setinv/localization_problem.h"
+#include "solver/setinv/localization/localization_problem.h"
 
 namespace gesmi::io {
 

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "solver/setinv/localization_problem.h"
+#include "solver/setinv/localization/localization_problem.h"
 
 namespace gesmi::io {
 

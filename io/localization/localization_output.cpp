@@ -10,7 +10,7 @@
 #include "io/localization/localization_hdf5.h"
 #include "io/localization/localization_json.h"
 #include "io/plot/localization_picture.h"
-#include "solver/setinv/range_data.h"
+#include "solver/setinv/localization/range_data.h"
 
 namespace gesmi::io {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/setinv/localization_problem.h"
+#include "solver/setinv/localization/localization_problem.h"
 
 namespace gesmi::io {
 

@@ -8,7 +8,7 @@
 #include <istream>
 #include <string>
 
-#include "solver/setinv/localization_problem.h"
+#include "solver/setinv/localization/localization_problem.h"
 
 namespace gesmi::io {
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "solver/setinv/localization_problem.h"
+#include "solver/setinv/localization/localization_problem.h"
 
 namespace gesmi::io {
 

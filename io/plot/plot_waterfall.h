@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "solver/mission/mission.h"
-#include "solver/network/waterfall.h"
+#include "solver/network/waterfall/waterfall.h"
 
 namespace gesmi::io {
 

@@ -107,12 +107,12 @@ struct Mission {
   std::vector<double> gps_north_halfwidth, gps_east_halfwidth;  // m
   // Largest angle between true north and the local frame's north axis (meridian
   // convergence) anywhere in the frame's zone (rad), added to the heading bound; the
-  // solve narrows it per sample over the tube (solver/network/frame_margins.h).
+  // solve narrows it per sample over the tube (solver/network/frame/frame_margins.h).
   double heading_frame_margin = 0.0;
   // The local frame's scale against the sea surface along any path within the frame's
   // zone (solver/mission/frame_scale.h), filled by io/: a step's north and east
   // increments widen by it times the step's integrated |w_north| + |w_east|; the solve
-  // narrows it per sample like the heading's (solver/network/frame_margins.h).
+  // narrows it per sample like the heading's (solver/network/frame/frame_margins.h).
   double frame_scale_margin = 0.0;
   // How much faster than the robot the surface point above it moves, at the deepest
   // the sonar's geometry reaches (docs/model.md, "The local frame's scale"), filled by

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "solver/mission/frame_scale.h"
-#include "solver/network/sensor_priors.h"
+#include "solver/network/sensors/sensor_priors.h"
 
 namespace gesmi {
 

@@ -12,8 +12,8 @@
 
 #include "solver/mission/mission.h"
 #include "solver/network/detection.h"
-#include "solver/network/frame_margins.h"
-#include "solver/network/sensor_boxes.h"
+#include "solver/network/frame/frame_margins.h"
+#include "solver/network/sensors/sensor_boxes.h"
 #include "solver/network/tube_domains.h"
 
 namespace gesmi {

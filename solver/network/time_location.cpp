@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "solver/network/sensor_boxes.h"
+#include "solver/network/sensors/sensor_boxes.h"
 
 namespace gesmi {
 

@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "solver/setinv/datum_tests.h"
-#include "solver/setinv/gomne.h"
-#include "solver/setinv/outlier_refinement.h"
+#include "solver/setinv/outliers/gomne.h"
+#include "solver/setinv/outliers/outlier_refinement.h"
 
 namespace gesmi {
 namespace {

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "solver/interval/box.h"
-#include "solver/setinv/outlier_set_pavings.h"
+#include "solver/setinv/outliers/outlier_set_pavings.h"
 
 namespace gesmi {
 

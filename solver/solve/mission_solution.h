@@ -13,9 +13,9 @@
 #include "solver/mission/sensor_model.h"
 #include "solver/network/constraint_ref.h"
 #include "solver/network/mission_solver.h"
-#include "solver/network/step_regimes.h"
+#include "solver/network/sensors/step_regimes.h"
 #include "solver/network/tube_domains.h"
-#include "solver/network/waterfall.h"
+#include "solver/network/waterfall/waterfall.h"
 
 namespace gesmi {
 

@@ -5,8 +5,8 @@
 #include <optional>
 #include <stdexcept>
 
-#include "solver/network/frame_margins.h"
-#include "solver/network/sensor_priors.h"
+#include "solver/network/frame/frame_margins.h"
+#include "solver/network/sensors/sensor_priors.h"
 #include "solver/network/inconsistency_text.h"
 #include "solver/solve/warm_start.h"
 

@@ -18,7 +18,7 @@
 #include <string>
 
 #include "solver/mission/mission.h"
-#include "solver/network/outlier_solver.h"
+#include "solver/network/outliers/outlier_solver.h"
 #include "solver/solve/mission_solution.h"
 
 namespace gesmi {

@@ -1,5 +1,5 @@
 // The frame's margins against the meridian convergence and the scale GeographicLib
-// measures (solver/network/frame_margins.h, io/geodesy.h): per-sample margins over a
+// measures (solver/network/frame/frame_margins.h, io/geodesy.h): per-sample margins over a
 // tube hold the convergence and the scale at every point the robot can reach from its
 // boxes, and a mission whose gyrocompass reads from true north keeps its truth inside
 // the tube.
@@ -19,7 +19,7 @@
 #include "io/geodesy.h"
 #include "solver/mission/frame_scale.h"
 #include "solver/mission/meridian_convergence.h"
-#include "solver/network/frame_margins.h"
+#include "solver/network/frame/frame_margins.h"
 #include "solver/sim/simulator.h"
 #include "solver/solve/solve_mission.h"
 #include "tests/support/truth_checks.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Adversarial true signals for the soundness tests of the per-step enclosures
-// (solver/network/sensor_boxes, time_location), built independently of gesmi's
+// (solver/network/sensors/sensor_boxes, time_location), built independently of gesmi's
 // simulator and sensor code. Every quantity is piecewise linear in time; its rate
 // never exceeds the model's bound (max_attitude_rate, max_acceleration, and for the
 // altitude |v| (1 + slope)), and at every sample it lies in the box the model

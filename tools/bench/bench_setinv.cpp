@@ -15,7 +15,7 @@
 #include "io/localization/localization_scenario.h"
 #include "solver/setinv/estimation_problem.h"
 #include "solver/setinv/invert.h"
-#include "solver/setinv/localization_problem.h"
+#include "solver/setinv/localization/localization_problem.h"
 
 namespace {
 

@@ -10,10 +10,10 @@
 #include <map>
 
 #include "io/geodesy.h"
-#include "solver/network/frame_margins.h"
+#include "solver/network/frame/frame_margins.h"
 #include "solver/network/incremental_solver.h"
-#include "solver/network/outlier_solver.h"
-#include "solver/network/waterfall.h"
+#include "solver/network/outliers/outlier_solver.h"
+#include "solver/network/waterfall/waterfall.h"
 #include "solver/sim/simulator.h"
 #include "solver/solve/solve_mission.h"
 

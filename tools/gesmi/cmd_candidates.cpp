@@ -6,7 +6,7 @@
 #include "io/output/atomic_output.h"
 #include "io/files/result_file.h"
 #include "io/text/csv_number.h"
-#include "solver/network/look_again.h"
+#include "solver/network/waterfall/look_again.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/command_report.h"

@@ -14,7 +14,7 @@
 #include "io/localization/localization_json.h"
 #include "io/localization/localization_output.h"
 #include "io/localization/localization_scenario.h"
-#include "solver/setinv/measurement_simulator.h"
+#include "solver/setinv/localization/measurement_simulator.h"
 #include "tools/gesmi/input_files.h"
 #include "tools/gesmi/cli_args.h"
 #include "tools/gesmi/command_report.h"

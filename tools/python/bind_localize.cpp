@@ -3,7 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "io/localization/localization_scenario.h"
-#include "solver/setinv/localization_problem.h"
+#include "solver/setinv/localization/localization_problem.h"
 #include "tools/python/bindings.h"
 
 namespace gesmi::python {

@@ -8,9 +8,9 @@
 #include <filesystem>
 
 #include "io/localization/localization_scenario.h"
-#include "solver/setinv/bearing_data.h"
-#include "solver/setinv/measurement_simulator.h"
-#include "solver/setinv/range_model.h"
+#include "solver/setinv/localization/bearing_data.h"
+#include "solver/setinv/localization/measurement_simulator.h"
+#include "solver/setinv/localization/range_model.h"
 #include "tests/support/paths.h"
 
 namespace gesmi {

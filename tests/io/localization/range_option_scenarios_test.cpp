@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "io/localization/localization_scenario.h"
-#include "solver/setinv/range_data.h"
+#include "solver/setinv/localization/range_data.h"
 #include "tests/support/paths.h"
 
 namespace gesmi {

@@ -16,7 +16,7 @@
 #include <random>
 #include <string>
 
-#include "solver/network/sensor_boxes.h"
+#include "solver/network/sensors/sensor_boxes.h"
 #include "tests/support/bounded_rate_mission.h"
 
 namespace gesmi {

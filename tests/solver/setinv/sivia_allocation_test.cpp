@@ -8,11 +8,11 @@
 #include <cstdlib>
 #include <new>
 
-#include "solver/setinv/gomne.h"
+#include "solver/setinv/outliers/gomne.h"
 #include "solver/setinv/invert.h"
-#include "solver/setinv/measurement_simulator.h"
-#include "solver/setinv/range_contractor.h"
-#include "solver/setinv/range_data.h"
+#include "solver/setinv/localization/measurement_simulator.h"
+#include "solver/setinv/localization/range_contractor.h"
+#include "solver/setinv/localization/range_data.h"
 
 namespace {
 std::atomic<long> g_allocations{0};

@@ -10,7 +10,7 @@
 
 #include "solver/mission/frame_scale.h"
 #include "solver/mission/meridian_convergence.h"
-#include "solver/network/frame_margins.h"
+#include "solver/network/frame/frame_margins.h"
 #include "solver/sim/simulator.h"
 #include "solver/solve/solve_mission.h"
 

@@ -1,5 +1,5 @@
 // A warm rerun copies the cells of the earlier waterfall whose inputs did not change
-// (solver/network/waterfall.h): its waterfall must be the one a full computation on
+// (solver/network/waterfall/waterfall.h): its waterfall must be the one a full computation on
 // the final domains gives, bit for bit (NaN cells included), and some cells must have
 // been worth recomputing (the added marks moved a mine box). A cell whose neighbouring
 // step's box moved is recomputed too.
