@@ -9,6 +9,8 @@
 #include <fstream>
 
 #include "io/output/atomic_output.h"
+#include "io/output/output_set.h"
+#include "io/output/temporary_names.h"
 #include "io/text/csv_number.h"
 #include "io/format_error.h"
 #include "io/imports/import_nav_csv.h"
@@ -144,6 +146,7 @@ void check_export_folder(const std::string& folder) {
   if (::access(parent.c_str(), W_OK) != 0) throw FormatError(folder + ": folder " + parent.string() + " is not writable");
   if (fs::exists(target, ec)) {
     if (!fs::is_directory(target, ec)) throw FormatError(folder + ": exists and is not a folder");
+    remove_dead_temporaries(target);  // what a killed export left
     if (!fs::is_empty(target, ec)) throw FormatError(folder + ": the folder exists and is not empty (choose a new one)");
   }
 }
@@ -151,9 +154,7 @@ void check_export_folder(const std::string& folder) {
 void export_mission_csv(const Mission& m, const std::string& folder) {
   check_export_folder(folder);
   const fs::path target = fs::path(folder).lexically_normal();
-  std::error_code ec;
-  fs::create_directory(target, ec);
-  if (ec) throw FormatError(folder + ": cannot create the folder: " + ec.message());
+  create_output_folder(folder);
   write_file(target / "nav.csv", write_nav_csv, m);
   write_file(target / "gps.csv", write_gps_csv, m);
   write_file(target / "marks.csv", write_marks_csv, m);

@@ -7,6 +7,7 @@
 #include "io/exports/export_csv.h"
 #include "io/files/sensor_model_yaml.h"
 #include "io/format_error.h"
+#include "io/output/output_set.h"
 #include "io/text/csv_number.h"
 #include "io/time/utc_time.h"
 
@@ -131,9 +132,7 @@ void export_mission_logger(const Mission& m, const std::string& source, const st
                         "export it with --format csv");
   check_export_folder(folder);
   const fs::path target = fs::path(folder).lexically_normal();
-  std::error_code ec;
-  fs::create_directory(target, ec);
-  if (ec) throw FormatError(folder + ": cannot create the folder: " + ec.message());
+  create_output_folder(folder);
 
   // The DVL rows: every dvl_every-th sample and the last one, outside the gap.
   const std::size_t n = m.size();

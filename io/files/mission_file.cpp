@@ -203,6 +203,13 @@ void read_truth_datasets(const H5File& f, const std::string& path, Mission& m,
   per_row("/truth/gps_outlier", m.gps_time.size(), m.truth_gps_outlier);
 }
 
+void clear_truth(Mission& m) {
+  for (auto* column : {&m.truth_x, &m.truth_y, &m.truth_z, &m.truth_mines, &m.truth_missed_marks})
+    std::vector<double>().swap(*column);
+  for (auto* flags : {&m.truth_marks_outlier, &m.truth_marks_mine, &m.truth_gps_outlier})
+    std::vector<std::int32_t>().swap(*flags);
+}
+
 }  // namespace
 
 void validate_mission(const Mission& m, const std::string& source) {
@@ -372,8 +379,12 @@ Mission MissionReader::read(TruthReading truth) const {
     m.mark_side = f.read_ints("/marks/side", 1);
   }
   if (truth == TruthReading::skip) {
-    check_truth_shapes(f, path, m);  // a damaged truth refused before any work
+    // A damaged truth is refused before any work all the same: checked as read() checks
+    // it, the positions block by block, and none of it kept.
+    const TruthPositions unkept = [](std::size_t, std::span<const double>) {};
+    read_truth_datasets(f, path, m, &unkept);
     validate_mission(m, path);
+    clear_truth(m);
     fill_local_gps(m, path);
     return m;
   }
@@ -393,10 +404,7 @@ void MissionReader::read_truth_into(Mission& m, const TruthPositions* positions)
     read_truth_datasets(file_, path_, m, positions);
     validate_truth(m, path_);
   } catch (...) {  // the mission stays as it was: without truth
-    for (auto* column : {&m.truth_x, &m.truth_y, &m.truth_z, &m.truth_mines, &m.truth_missed_marks})
-      std::vector<double>().swap(*column);
-    for (auto* flags : {&m.truth_marks_outlier, &m.truth_marks_mine, &m.truth_gps_outlier})
-      std::vector<std::int32_t>().swap(*flags);
+    clear_truth(m);
     throw;
   }
 }

@@ -26,9 +26,9 @@ class MissionReader {
  public:
   /// Opens the file; FormatError if it is missing or not HDF5.
   explicit MissionReader(const std::string& path);
-  /// read_mission()'s reading and validation. With TruthReading::skip the shapes of the
-  /// truth's positions and mines are still checked, so that a damaged truth is refused
-  /// before any work.
+  /// read_mission()'s reading and validation. With TruthReading::skip the truth is still
+  /// checked (its positions block by block) but not kept, so that a damaged truth is
+  /// refused before any work.
   Mission read(TruthReading truth = TruthReading::read) const;
   /// Reads the truth (if any) into a mission read with TruthReading::skip (std::logic_error
   /// if it holds a truth already), with the checks of read(); FormatError naming the

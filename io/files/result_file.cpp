@@ -17,6 +17,7 @@
 #include "io/hdf5/h5_file.h"
 #include "io/hdf5/h5_format.h"
 #include "solver/network/mission_network.h"
+#include "solver/solve/unchecked_inputs.h"
 
 namespace gesmi::io {
 namespace {
@@ -108,6 +109,16 @@ void write_regimes(H5File& f, const StepRegimeReport& g) {
     f.set_attribute("/", a.count_name, static_cast<std::int64_t>(g.*a.count));
     f.set_attribute("/", a.times_name, times_text(g.*a.times));
   }
+}
+
+// The inputs nothing else checks, for a reader of the file's attributes: "mines 3 (mark
+// 12), 5 (mark 40); GPS fix 0", empty when there are none.
+std::string unchecked_inputs_text(const UncheckedInputs& u) {
+  std::string text;
+  for (std::size_t i = 0; i < u.mines.size(); ++i)
+    text += (i ? ", " : u.mines.size() == 1 ? "mine " : "mines ") + std::to_string(u.mines[i]) + " (mark " + std::to_string(u.marks[i]) + ")";
+  for (const std::size_t fix : u.gps_fixes) text += (text.empty() ? "" : "; ") + std::string("GPS fix ") + std::to_string(fix);
+  return text;
 }
 
 // The root attributes the root digest covers (timings are informative and left out).
@@ -521,6 +532,30 @@ void verify_root_digest(const H5File& f, const SolveResult& r, DigestKind verifi
     bad(f, "/", "attributes or dataset digests " + differ_from_recorded(verified));
 }
 
+// The datasets a partial read leaves out (ResultParts), checked all the same, in blocks:
+// a result edited anywhere is refused by every command that reads it.
+void verify_unread(const H5File& f, std::size_t n, std::size_t k, const ResultParts& parts, int format_version,
+                   DigestKind verified) {
+  const auto check_bounds = [&](const std::string& prefix, std::size_t rows) {
+    std::vector<Interval> block[3];
+    read_bound_blocks(
+        f, prefix, rows, verified,
+        [&](std::size_t, std::size_t count) {
+          for (std::vector<Interval>& axis : block) axis.resize(count);
+          return std::array<Interval*, 3>{block[0].data(), block[1].data(), block[2].data()};
+        },
+        [](std::size_t, std::size_t) {});
+  };
+  if (!parts.tube && !parts.tube_rows) check_bounds("/tube", n);
+  if (!(parts.increments && parts.tube) || parts.tube_rows) check_bounds("/increments", n == 0 ? 0 : n - 1);
+  if (parts.waterfall) return;
+  Waterfall unused;
+  if (format_version >= 3)
+    read_waterfall_cells(f, n, k, unused, verified);
+  else
+    read_dense_waterfall(f, n, k, verified, unused);
+}
+
 // A consistent result has no empty interval in its tube, increments or mine boxes.
 void check_consistent_domains(const H5File& f, bool empty_domain, const std::vector<Vec3I>& mine_boxes) {
   if (empty_domain) bad(f, "/tube", "a consistent result with an empty domain (edited or damaged)");
@@ -603,7 +638,9 @@ void write_result(const SolveResult& r, const std::string& path) {
     std::vector<std::pair<std::string, std::string>> digested = fields;
     for (const char* dataset : kDatasets) digested.emplace_back(dataset, *f.string_attribute(dataset, digest));
     f.set_attribute("/", digest, digest_of_fields(digested, kResultDigest));
-    // Informative, outside the digests: how the file was made, and its units.
+    // Informative, outside the digests: what a reader recomputes from the candidates and
+    // fixes, how the file was made, and its units.
+    f.set_attribute("/", "unchecked_inputs", unchecked_inputs_text(unchecked_inputs(s)));
     write_provenance(f, "trajectory");
     write_units(f, kResultUnits);
     write_time_units(f, "/time", "sample time", r.epoch);
@@ -636,7 +673,10 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
   read_marks_and_fixes(f, marks, verified, s);
   if (parts.waterfall && r.format_version >= 3) read_waterfall_cells(f, n, k, s.waterfall, *verified);
   if (parts.waterfall && r.format_version < 3) read_dense_waterfall(f, n, k, verified, s.waterfall);
-  if (verified) verify_root_digest(f, r, *verified);
+  if (verified) {
+    verify_root_digest(f, r, *verified);  // first: it also covers a dataset digest recomputed with its edit
+    verify_unread(f, n, k, parts, r.format_version, *verified);
+  }
   if (s.report.consistent) check_consistent_domains(f, empty_domain, s.domains.mines);
   return r;
 }

@@ -7,6 +7,7 @@
 #include "io/format_error.h"
 #include "io/text/csv_number.h"
 #include "io/output/atomic_output.h"
+#include "io/output/output_set.h"
 #include "io/report/report_json.h"
 
 namespace gesmi::io {
@@ -33,7 +34,7 @@ std::string format(const char* pattern, auto... values) {
 
 constexpr const char* kLimitConsequence =
     "open boxes were kept unbisected (levels after it keep their prior box whole); the boxes still enclose "
-    "every j^-1(q), but fewer sets may be proved\n";
+    "every j^-1(q), but fewer sets may be proved; raise it in the scenario's solver section to prove more\n";
 
 std::string limit_text(const EstimationLevel& level) {
   if (level.box_limit_hit && level.time_limit_hit) return "  WARNING: the box and time limits were hit";
@@ -129,9 +130,7 @@ std::vector<std::string> estimation_output_files(const std::string& folder) {
 
 std::vector<std::string> write_estimation_outputs(const std::string& folder, const EstimationProblem& p,
                                                   const EstimationResult& r) {
-  std::error_code ec;
-  std::filesystem::create_directories(folder, ec);
-  if (ec) throw FormatError(folder + ": cannot create folder: " + ec.message());
+  create_output_folder(folder);
   const std::vector<std::string> files = estimation_output_files(folder);
   write_text_file(files[0], estimation_summary(p, r));
   write_text_file(files[1], estimation_summary_json(p, r).dump(2) + "\n");

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "io/output/atomic_output.h"
+#include "io/output/output_set.h"
 #include "io/format_error.h"
 #include "io/text/csv_number.h"
 #include "io/localization/localization_hdf5.h"
@@ -112,7 +113,10 @@ std::string localization_summary(const LocalizationProblem& p, const Localizatio
   s += format("paving: %zu inner boxes (volume %.6g), %zu boundary boxes (volume %.6g); %.3f s in all\n",
               r.paving.inner.size(), r.paving.inner.volume(), r.paving.boundary.size(), r.paving.boundary.volume(), r.seconds);
   if (r.limit_hit())
-    s += "WARNING: a box or time limit was hit: undetermined boxes were kept unbisected\n";
+    s += format("WARNING: a limit was hit (solver.max_boxes: %zu boxes, solver.max_seconds: %s s): undetermined boxes "
+                "were kept unbisected (still an enclosure); raise them in the scenario's solver section to bisect "
+                "further\n",
+                p.max_boxes, format_number(p.max_seconds).c_str());
   if (rep.boxes_unsplittable > 0)
     s += format("NOTE: %zu undetermined boxes were too narrow for doubles to bisect (epsilon is below the spacing of "
                 "doubles there): kept as boundary boxes\n", rep.boxes_unsplittable);
@@ -168,10 +172,7 @@ std::vector<std::string> localization_output_files(const std::string& folder) {
 
 std::vector<std::string> write_localization_outputs(const std::string& folder, const LocalizationProblem& p,
                                                     const LocalizationResult& r) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(folder, ec);
-  if (ec) throw FormatError(folder + ": cannot create folder: " + ec.message());
+  create_output_folder(folder);
   std::vector<int> inner_component(r.paving.inner.size(), 0), boundary_component(r.paving.boundary.size(), 0);
   for (std::size_t k = 0; k < r.hypotheses.size(); ++k) {
     for (std::size_t i : r.hypotheses[k].component.inner) inner_component[i] = static_cast<int>(k + 1);

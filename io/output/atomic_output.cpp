@@ -1,6 +1,5 @@
 #include "io/output/atomic_output.h"
 
-#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -13,38 +12,18 @@
 #include "io/format_error.h"
 #include "io/output/interrupt_cleanup.h"
 #include "io/output/output_set.h"
+#include "io/output/temporary_names.h"
 
 namespace gesmi::io {
-namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kTempMark = ".tmp-";
-
-// Removes "<final>.tmp-<pid>" files whose process no longer runs (killed by -9, a
-// power cut): they would otherwise stay beside the target for ever.
-void remove_stale_temporaries(const std::string& final_path) {
-  const fs::path target(final_path);
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  const std::string prefix = target.filename().string() + kTempMark;
-  std::error_code ec;
-  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (name.rfind(prefix, 0) != 0) continue;
-    const std::string digits = name.substr(prefix.size());
-    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
-    const pid_t pid = static_cast<pid_t>(std::stol(digits));
-    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
-    std::error_code ignored;
-    fs::remove(it->path(), ignored);
-  }
-}
-
-}  // namespace
-
-AtomicOutput::AtomicOutput(std::string final_path)
-    : final_path_(std::move(final_path)), temp_path_(final_path_ + kTempMark + std::to_string(::getpid())) {
-  remove_stale_temporaries(final_path_);
+AtomicOutput::AtomicOutput(std::string final_path) : final_path_(std::move(final_path)) {
+  // Beside the target, or in its folder's staging folder (OutputSet::prepare_folder).
+  const OutputSet* set = OutputSet::active();
+  const fs::path where(set ? set->staged_path(final_path_) : final_path_);
+  temp_path_ = temporary_name(where.string());
+  remove_dead_temporaries(where.parent_path(), where.filename().string());
   slot_ = track_temporary(temp_path_);
 }
 

@@ -9,7 +9,8 @@
 //
 // While an OutputSet is open (output_set.h), commit() hands the file to the set,
 // which renames all of a command's files together. The temporary name is
-// "<target>.tmp-<pid>"; temporaries of processes that no longer run are removed
+// "<target>.tmp-<pid>" (in the staging folder of a folder the set stages);
+// temporaries of processes that no longer run are removed
 // when the same target is written again, and an interrupt removes the current
 // ones (interrupt_cleanup.h).
 

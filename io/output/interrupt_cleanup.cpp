@@ -20,13 +20,11 @@ struct Slot {
 Slot slots[kSlots];
 
 extern "C" void remove_and_exit(int signal_number) {
-  for (Slot& s : slots) {
-    if (!s.used.load(std::memory_order_acquire)) continue;
-    if (s.folder)
-      ::rmdir(s.path);
-    else
-      ::unlink(s.path);
-  }
+  // The files first: a folder is only removed once empty.
+  for (Slot& s : slots)
+    if (s.used.load(std::memory_order_acquire) && !s.folder) ::unlink(s.path);
+  for (int i = kSlots - 1; i >= 0; --i)
+    if (slots[i].used.load(std::memory_order_acquire) && slots[i].folder) ::rmdir(slots[i].path);
   ::_exit(128 + signal_number);
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "io/time/utc_time.h"
+#include "solver/solve/unchecked_inputs.h"
 
 namespace gesmi::io {
 
@@ -200,6 +201,8 @@ json solve_json(const Mission& m, const MissionSolution& s) {
                      {"outlier", j < s.mark_outlier.size() && s.mark_outlier[j] != 0}});
   }
   out["marks"] = marks;
+  const UncheckedInputs unchecked = unchecked_inputs(s);
+  out["unchecked"] = {{"mines", unchecked.mines}, {"marks", unchecked.marks}, {"gps_fixes", unchecked.gps_fixes}};
   json mines = json::array();
   for (std::size_t i = 0; i < s.domains.mines.size(); ++i) mines.push_back({{"mine", i}, {"box_m", box_json(s.domains.mines[i])}});
   out["mines"] = mines;

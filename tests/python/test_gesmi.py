@@ -119,6 +119,19 @@ def test_outliers_diagnosis_kalman_and_localize(tmp_path):
     assert all(math.isfinite(x) for x in k.mean[:, 0])
 
 
+def test_the_inputs_nothing_else_checks_are_named():
+    m = gesmi.simulate(seed=27, duration=1800, outliers=1)
+    counts = {}
+    for j, mine in enumerate(m.mark_mine):
+        counts.setdefault(int(mine), []).append(j)
+    single = sorted(mine for mine, rows in counts.items() if len(rows) == 1)
+    assert single
+    u = gesmi.solve(m).unchecked
+    assert u["mines"] == single
+    assert u["marks"] == [counts[mine][0] for mine in single]
+    assert u["gps_fixes"] == []
+
+
 def test_kalman_checks_and_biases():
     # The outlier mission's corrupted mark is flagged, with the other mark of the same mine
     # only (two marks of one mine that disagree: leaving either out explains the other);

@@ -94,5 +94,22 @@ TEST(LocalizeCommand, SummaryListsTheSetsOfAnUndeterminedHypothesis) {
   EXPECT_TRUE(several);
 }
 
+// A search stopped by a limit says which limits it had and where to raise them.
+TEST(LocalizeCommand, ALimitHitNamesTheLimitsAndHowToRaiseThem) {
+  const std::string dir = temp_folder("localize_limit");
+  std::string scenario = read(source_dir() + "/missions/localization/seed000_symmetric.yaml");
+  const std::string solver = "solver:\n  epsilon: 0.02\n";
+  ASSERT_NE(scenario.find(solver), std::string::npos);
+  scenario.replace(scenario.find(solver), solver.size(), "solver:\n  epsilon: 1e-12\n  max_boxes: 2000\n");
+  std::ofstream(dir + "/s.yaml") << scenario;
+  const CommandResult r = run_gesmi({"localize", dir + "/s.yaml", "-o", dir + "/out"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("WARNING: a limit was hit (solver.max_boxes: 2000 boxes, solver.max_seconds: 600 s): "
+                       "undetermined boxes were kept unbisected (still an enclosure); raise them in the scenario's "
+                       "solver section"),
+            std::string::npos)
+      << r.out;
+}
+
 }  // namespace
 }  // namespace gesmi::test

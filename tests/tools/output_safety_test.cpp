@@ -222,5 +222,41 @@ TEST(OutputSafety, TemporariesOfDeadProcessesAreRemovedAndOthersKept) {
   EXPECT_TRUE(fs::exists(alive));
 }
 
+TEST(OutputSafety, AFolderExportKilledBeforeItsEndLeavesNoFolderAndTheRerunWrites) {
+  for (const std::string format : {"csv", "logger"}) {
+    SCOPED_TRACE(format);
+    const std::string parent = temp_folder("outputs-kill");
+    const std::string folder = parent + "/export";
+    const pid_t pid = spawn_gesmi({"export", mission(), "-o", folder, "--format", format}, "GESMI_TEST_PAUSE_BEFORE_COMMIT=10");
+    // Killed by -9 (no handler runs) once its last file is complete.
+    const std::string last = folder + ".tmp-" + std::to_string(pid) + "/import-command.txt.tmp-" + std::to_string(pid);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!fs::exists(last) && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ASSERT_TRUE(fs::exists(last));
+    ::kill(pid, SIGKILL);
+    ASSERT_EQ(::waitpid(pid, nullptr, 0), pid);
+    EXPECT_FALSE(fs::exists(folder));  // only the staging folder, under its temporary name
+    EXPECT_EQ(names_in(parent).size(), 1u);
+    const CommandResult skip = run_gesmi({"export", mission(), "-o", folder, "--format", format, "--skip-existing"});
+    EXPECT_EQ(skip.exit_code, 0) << skip.err;
+    EXPECT_TRUE(fs::exists(folder + "/import-command.txt"));
+    EXPECT_EQ(names_in(parent), (std::set<std::string>{"export"}));  // the dead run's staging folder removed
+  }
+}
+
+TEST(OutputSafety, AnEmptyFolderLeftWithTheTemporariesOfAKilledExportIsWrittenAgain) {
+  const std::string folder = temp_folder("outputs-kill-empty");
+  const pid_t dead = fork();
+  if (dead == 0) _exit(0);
+  ASSERT_GT(dead, 0);
+  ASSERT_EQ(::waitpid(dead, nullptr, 0), dead);
+  std::ofstream(folder + "/nav.csv.tmp-" + std::to_string(dead)) << "half-written";
+  const CommandResult r = run_gesmi({"export", mission(), "-o", folder});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(folder + "/nav.csv.tmp-" + std::to_string(dead)));
+  EXPECT_TRUE(fs::exists(folder + "/import-command.txt"));
+}
+
 }  // namespace
 }  // namespace gesmi::test

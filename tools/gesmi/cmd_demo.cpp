@@ -51,7 +51,7 @@ int run_demo(std::span<const std::string> args) {
   if (skipped_as_existing(v, "demo", files)) return kExitOk;
   // One set over the whole demo: a step that fails removes what the earlier ones wrote.
   io::OutputSet outputs;
-  outputs.prepare_folder(dir);
+  outputs.prepare_folder(dir, /*in_place=*/true);  // the result names its mission by path
   const std::string mission = dir + "/mission.h5", result = dir + "/result.h5";
 
   const auto start = std::chrono::steady_clock::now();

@@ -9,6 +9,7 @@
 
 #include "io/text/csv_number.h"
 #include "solver/network/inconsistency_text.h"
+#include "solver/solve/unchecked_inputs.h"
 
 namespace gesmi::cli {
 
@@ -36,6 +37,27 @@ void print_regime_notes(const StepRegimeReport& r) {
                  r.speed_exceeded, times_text(r.speed_exceeded_times, r.speed_exceeded).c_str());
 }
 
+void print_unchecked_notes(const MissionSolution& s) {
+  const UncheckedInputs u = unchecked_inputs(s);
+  if (!u.mines.empty()) {
+    std::string mines, marks;
+    for (std::size_t i = 0; i < u.mines.size(); ++i) {
+      mines += (i ? ", " : "") + std::to_string(u.mines[i]);
+      marks += (i ? ", " : "") + std::to_string(u.marks[i]);
+    }
+    const bool one = u.mines.size() == 1;
+    const bool tolerant = s.report.mode == SolveMode::outliers || s.report.mode == SolveMode::minimal_outliers;
+    std::fprintf(stderr, "gesmi solve: warning: %s %s rest%s on one mark%s (mark%s %s): a wrong mark there cannot be detected%s\n",
+                 one ? "mine" : "mines", mines.c_str(), one ? "s" : "", one ? "" : " each", one ? "" : "s", marks.c_str(),
+                 tolerant ? "" : "; --max-outliers 1 keeps the mines enclosed even if one such mark is wrong");
+  }
+  if (!u.gps_fixes.empty())
+    std::fprintf(stderr,
+                 "gesmi solve: warning: GPS fix %zu is the mission's only one: nothing else checks it, and a wrong fix "
+                 "would move the whole tube undetected\n",
+                 u.gps_fixes.front());
+}
+
 void print_solve_notes(const MissionSolution& s) {
   const SolveReport& r = s.report;
   if (r.cold_fallback) std::fprintf(stderr, "gesmi solve: %s; solving cold\n", r.cold_fallback->c_str());
@@ -50,6 +72,7 @@ void print_solve_notes(const MissionSolution& s) {
                  "(--origin LAT,LON)\n",
                  r.beyond_frame_zone);
   print_regime_notes(r.regimes);
+  print_unchecked_notes(s);
   if (!r.consistent || r.minimal_outliers == 0 || r.hypotheses.empty()) return;
   std::fprintf(stderr, "gesmi solve: consistent with %d outlier(s); %zu hypothesis(es) restore consistency:\n",
                r.minimal_outliers, r.hypotheses.size());

@@ -17,6 +17,7 @@
 #include "io/files/warm_start_file.h"
 #include "solver/network/inconsistency_text.h"
 #include "solver/solve/solve_mission.h"
+#include "solver/solve/unchecked_inputs.h"
 #include "tools/python/bindings.h"
 
 namespace gesmi::python {
@@ -136,6 +137,17 @@ void bind_solve(py::module_& m) {
                              }, "per mark row: the mines it may belong to")
       .def_property_readonly("mark_outlier", [](const MissionSolution& s) { return s.mark_outlier; })
       .def_property_readonly("gps_outlier", [](const MissionSolution& s) { return s.gps_outlier; })
+      .def_property_readonly("unchecked",
+                             [](const MissionSolution& s) {
+                               const UncheckedInputs u = unchecked_inputs(s);
+                               py::dict out;
+                               out["mines"] = u.mines;
+                               out["marks"] = u.marks;
+                               out["gps_fixes"] = u.gps_fixes;
+                               return out;
+                             },
+                             "inputs nothing else checks: {'mines', 'marks' (the one mark of each), 'gps_fixes'}; a wrong "
+                             "one moves its enclosure with no inconsistency to show it")
       .def_property_readonly("report", [](const MissionSolution& s) { return report_dict(s.report); })
       .def_property_readonly("consistent", [](const MissionSolution& s) { return s.report.consistent; })
       .def_property_readonly("timings_ms", [](const MissionSolution& s) { return s.timings_ms; })

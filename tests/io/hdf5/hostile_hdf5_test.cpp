@@ -296,21 +296,29 @@ TEST(HostileHdf5, TheTubeCsvExportWritesNothingForAnEditedTube) {
   EXPECT_EQ(lines, read_result(result, {.tube = false, .waterfall = false}).solution.time.size() + 1);
 }
 
-TEST(HostileHdf5, PartialReadsCheckWhatTheyReadAndTheRootDigest) {
-  // `gesmi waterfall` and `candidates` read no tube: an edited waterfall, mark table or
-  // root attribute is still refused; an edited tube is not read, hence not used.
-  const auto without_tube = [](const std::string& p) { return read_result(p, {.tube = false}); };
+TEST(HostileHdf5, PartialReadsCheckEveryDigest) {
+  // `gesmi waterfall` and `candidates` read no tube, `export --format mines-csv` neither
+  // tube nor waterfall: a result edited in what they leave out is refused all the same.
   const Case cases[] = {
       {"s = f['/waterfall/step'][:]\ns[[0, 1]] = s[[1, 0]] + 1\nf['/waterfall/step'][:] = s", "/waterfall/step: contents differ"},
       {"c = f['/marks/candidates'][:]\nc[:] = 1\nf['/marks/candidates'][:] = c", "/marks/candidates: contents differ"},
       {"f.attrs['sweeps'] = np.int64(999)", "/: attributes or dataset digests differ"},
-      {"f['/tube/lower'].attrs['xxh128'] = 'ab'", "/: attributes or dataset digests differ"},
+      {"f['/tube/lower'].attrs['xxh128'] = 'ab'", "differ from the XXH3-128 digest"},  // the tube's or the root's
+      {"u = f['/tube/upper'][:]\nu[100:200] += 50\nf['/tube/upper'][:] = u", "/tube/upper: contents differ"},
+      {"d = f['/increments/lower'][:]\nd[7, 2] -= 1.0\nf['/increments/lower'][:] = d", "/increments/lower: contents differ"},
+      {"w = f['/waterfall/upper'][:]\nw[3] += 1.0\nf['/waterfall/upper'][:] = w", "/waterfall/upper: contents differ"},
   };
-  expect_refused(samples().result, cases, without_tube);
-  const std::string tube_edited = edited(samples().result, "u = f['/tube/upper'][:]\nu[100:200] += 50\nf['/tube/upper'][:] = u");
-  const SolveResult partial = without_tube(tube_edited);
+  std::vector<std::string> edits;
+  for (const Case& c : cases) edits.push_back(c.edit);
+  const std::vector<std::string> paths = test::h5py_edited_copies(samples().result, edits);
+  for (const ResultParts& parts : {ResultParts{.tube = false}, ResultParts{.tube = false, .increments = false, .waterfall = false},
+                                  ResultParts{.tube = true, .waterfall = false}})
+    for (std::size_t i = 0; i < std::size(cases); ++i)
+      expect_refused_file(paths[i], cases[i], [&](const std::string& p) { return read_result(p, parts); });
+  // What was not asked for is still not kept.
+  const SolveResult partial = read_result(samples().result, {.tube = false, .waterfall = false});
   EXPECT_TRUE(partial.solution.domains.px.empty());
-  EXPECT_FALSE(partial.solution.waterfall.lower.empty());
+  EXPECT_TRUE(partial.solution.waterfall.lower.empty());
 }
 
 TEST(HostileHdf5, ResultsOfEarlierVersionsAreReadButCheckedValueByValue) {

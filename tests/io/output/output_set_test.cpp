@@ -1,10 +1,13 @@
-// io::OutputSet: files appear together at commit, or not at all; siblings of an
-// earlier run that this run did not write go; a failed outer set takes back what the
-// sets inside it committed.
+// io::OutputSet: files appear together at commit, or not at all; a new folder appears
+// whole at commit; siblings of an earlier run that this run did not write go; a failed
+// outer set takes back what the sets inside it committed.
 
 #include "io/output/output_set.h"
 
 #include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -72,7 +75,7 @@ TEST(OutputSet, AFailedOuterSetTakesBackWhatInnerSetsCommitted) {
   const std::string folder = parent + "/demo";
   {
     OutputSet outer;
-    outer.prepare_folder(folder);
+    outer.prepare_folder(folder, /*in_place=*/true);
     {
       OutputSet inner;
       write_text_file(folder + "/mission.h5", "m");
@@ -81,6 +84,64 @@ TEST(OutputSet, AFailedOuterSetTakesBackWhatInnerSetsCommitted) {
     EXPECT_TRUE(fs::exists(folder + "/mission.h5"));  // readable by the next step
   }
   EXPECT_FALSE(fs::exists(folder));  // created by the set, empty again, removed
+}
+
+TEST(OutputSet, AMissingFolderIsFilledUnderATemporaryNameAndAppearsWholeAtCommit) {
+  const std::string parent = test::temp_folder("output-set");
+  const std::string folder = parent + "/out";
+  OutputSet set;
+  set.prepare_folder(folder + "/");
+  const std::string staging = folder + ".tmp-" + std::to_string(::getpid());
+  EXPECT_EQ(set.staged_path(folder + "/a.txt"), staging + "/a.txt");
+  write_text_file(folder + "/a.txt", "a");
+  write_text_file(folder + "/b.txt", "b");
+  EXPECT_FALSE(fs::exists(folder));
+  EXPECT_EQ(files_in(staging), 2u);  // the two temporaries
+  set.commit();
+  EXPECT_EQ(files_in(folder), 2u);
+  EXPECT_EQ(files_in(parent), 1u);
+  EXPECT_EQ(set.written(), (std::vector<std::string>{folder + "/a.txt", folder + "/b.txt"}));
+}
+
+TEST(OutputSet, AStagedFolderWithoutCommitLeavesNothing) {
+  const std::string parent = test::temp_folder("output-set");
+  {
+    OutputSet set;
+    set.prepare_folder(parent + "/out");
+    write_text_file(parent + "/out/a.txt", "a");
+    {
+      OutputSet inner;
+      write_text_file(parent + "/out/b.txt", "b");
+      inner.commit();
+    }
+    EXPECT_FALSE(fs::exists(parent + "/out"));
+  }
+  EXPECT_EQ(files_in(parent), 0u);
+}
+
+TEST(OutputSet, AnExistingFolderIsWrittenInPlaceAndStagingFoldersOfDeadRunsGo) {
+  const std::string parent = test::temp_folder("output-set");
+  const pid_t dead = fork();
+  if (dead == 0) _exit(0);
+  ASSERT_GT(dead, 0);
+  ASSERT_EQ(::waitpid(dead, nullptr, 0), dead);
+  const std::string stale = parent + "/out.tmp-" + std::to_string(dead);
+  fs::create_directory(stale);
+  std::ofstream(stale + "/a.txt") << "half";
+  const std::string other = parent + "/other.tmp-" + std::to_string(dead);  // another target's
+  fs::create_directory(other);
+  {
+    OutputSet set;
+    set.prepare_folder(parent + "/out");
+    EXPECT_FALSE(fs::exists(stale));
+    EXPECT_TRUE(fs::exists(other));
+    write_text_file(parent + "/out/a.txt", "a");
+    set.commit();
+  }
+  OutputSet again;
+  again.prepare_folder(parent + "/out");
+  EXPECT_FALSE(again.stages(parent + "/out"));  // it exists: written in place
+  EXPECT_EQ(again.staged_path(parent + "/out/a.txt"), parent + "/out/a.txt");
 }
 
 TEST(OutputSet, ChecksRefuseInputsAndNonRegularFiles) {
