@@ -1,6 +1,7 @@
 #pragma once
 // Options of the reference-like mission simulator.
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -17,16 +18,32 @@ namespace gesmi {
 /// bias the bias-aware Kalman smoother assumes (docs/comparison.md); corners: at 99.9 %
 /// of the bound on the side that puts the truth on its box's corner where the
 /// trapezoid rule is weakest (the sign of the truth's second difference at the sample:
-/// adversarial for the jerk bound).
-enum class SimulatedErrors { uniform, worst_case, at_samples, drifting, corners };
-/// "uniform", "worst-case", "at-samples", "drifting", "corners"; parse returns false for
-/// another name.
+/// adversarial for the jerk bound); bias_noise: what sensor datasheets state, a bias
+/// at a share of the bound plus noise within the rest (reading_errors.h).
+enum class SimulatedErrors { uniform, worst_case, at_samples, drifting, corners, bias_noise };
+inline constexpr std::array kAllSimulatedErrors = {SimulatedErrors::uniform,  SimulatedErrors::worst_case,
+                                                   SimulatedErrors::at_samples, SimulatedErrors::drifting,
+                                                   SimulatedErrors::corners,  SimulatedErrors::bias_noise};
+/// "uniform", "worst-case", "at-samples", "drifting", "corners", "bias-noise"; parse
+/// returns false for another name.
 const char* simulated_errors_name(SimulatedErrors errors);
 bool parse_simulated_errors(std::string_view name, SimulatedErrors& errors);
+/// Every name, for a message: "uniform, worst-case, ... or bias-noise".
+std::string simulated_errors_names();
+
+/// How the biases of the bias-noise mode change: not at all, linearly from their value
+/// at the start to its opposite at the end (ramp), or to their opposite at the middle of
+/// the mission (flip).
+enum class BiasDrift { none, ramp, flip };
+/// "none", "ramp", "flip"; parse returns false for another name.
+const char* bias_drift_name(BiasDrift drift);
+bool parse_bias_drift(std::string_view name, BiasDrift& drift);
 
 struct SimulationOptions {
   std::uint64_t seed = 1;
   SimulatedErrors errors = SimulatedErrors::uniform;
+  double bias_share = 0.9;           // bias_noise: the bias's share of each bound, in [0, 1]
+  BiasDrift drift = BiasDrift::none;  // bias_noise
   double duration = 5999.4;  // s, t0 = 0 to tf (the reference mission's times)
   double rate = 10.0;        // Hz
   int mines = 6;             // the reference layout first, extra mines in the survey area

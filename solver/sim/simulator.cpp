@@ -9,6 +9,7 @@
 #include "solver/model/euler.h"
 #include "solver/sim/extra_motion.h"
 #include "solver/sim/random_source.h"
+#include "solver/sim/reading_errors.h"
 #include "solver/sim/survey_plan.h"
 
 namespace gesmi {
@@ -29,39 +30,6 @@ double wrap(double angle) { return std::remainder(angle, kTwoPi); }
 double true_roll(double t) { return 0.02 * std::sin(kTwoPi * t / 23.0); }
 double true_sway(double t) { return 0.04 * std::sin(kTwoPi * t / 37.0); }
 double true_heave(double t) { return 0.02 * std::sin(kTwoPi * t / 53.0); }
-
-// Reading errors strictly inside their bounds: uniform, a bias at 99 % of the
-// bound with a sign fixed per sensor (worst case), at 99 % of the bound against
-// `change`, how the true value moves over the coming step (at samples), or a slow
-// sinusoid of amplitude 99 % of the bound at time t (drifting), or at 99.9 % of the bound
-// on the side of `curvature`, the truth's second difference at the sample (corners).
-class Errors {
- public:
-  enum Sensor { roll, pitch, heading, vx, vy, vz, depth, altitude, gps_north, gps_east, mark, count };
-  Errors(RandomSource& rng, SimulatedErrors mode) : rng_(rng), mode_(mode) {
-    for (double& s : signs_) s = rng_.sign();
-    // Drawn only in this mode, so the other modes keep their random sequence.
-    if (mode_ == SimulatedErrors::drifting)
-      for (int s = 0; s < count; ++s) {
-        periods_[s] = rng_.uniform(600.0, 2400.0);
-        phases_[s] = rng_.uniform(0.0, kTwoPi);
-      }
-  }
-  double operator()(Sensor sensor, double bound, double t, double change = 0.0, double curvature = 0.0) {
-    if (mode_ == SimulatedErrors::corners) return 0.999 * bound * (curvature >= 0.0 ? 1.0 : -1.0);
-    if (mode_ == SimulatedErrors::worst_case) return 0.99 * bound * signs_[sensor];
-    if (mode_ == SimulatedErrors::at_samples && change != 0.0) return -0.99 * bound * (change > 0.0 ? 1.0 : -1.0);
-    if (mode_ == SimulatedErrors::drifting) return 0.99 * bound * std::sin(kTwoPi * t / periods_[sensor] + phases_[sensor]);
-    return 0.99 * bound * rng_.uniform(-1.0, 1.0);
-  }
-
- private:
-  RandomSource& rng_;
-  SimulatedErrors mode_;
-  double signs_[count];
-  double periods_[count] = {};
-  double phases_[count] = {};
-};
 
 struct TruthState {
   Vec3d p{0.0, 0.0, 6.0};
@@ -173,15 +141,40 @@ const char* simulated_errors_name(SimulatedErrors errors) {
     case SimulatedErrors::at_samples: return "at-samples";
     case SimulatedErrors::drifting: return "drifting";
     case SimulatedErrors::corners: return "corners";
+    case SimulatedErrors::bias_noise: return "bias-noise";
   }
   return "uniform";
 }
 
+std::string simulated_errors_names() {
+  std::string names;
+  for (const SimulatedErrors e : kAllSimulatedErrors)
+    names += std::string(names.empty() ? "" : e == kAllSimulatedErrors.back() ? " or " : ", ") + simulated_errors_name(e);
+  return names;
+}
+
 bool parse_simulated_errors(std::string_view name, SimulatedErrors& errors) {
-  for (const SimulatedErrors e : {SimulatedErrors::uniform, SimulatedErrors::worst_case, SimulatedErrors::at_samples,
-                                  SimulatedErrors::drifting, SimulatedErrors::corners})
+  for (const SimulatedErrors e : kAllSimulatedErrors)
     if (name == simulated_errors_name(e)) {
       errors = e;
+      return true;
+    }
+  return false;
+}
+
+const char* bias_drift_name(BiasDrift drift) {
+  switch (drift) {
+    case BiasDrift::none: return "none";
+    case BiasDrift::ramp: return "ramp";
+    case BiasDrift::flip: return "flip";
+  }
+  return "none";
+}
+
+bool parse_bias_drift(std::string_view name, BiasDrift& drift) {
+  for (const BiasDrift d : {BiasDrift::none, BiasDrift::ramp, BiasDrift::flip})
+    if (name == bias_drift_name(d)) {
+      drift = d;
       return true;
     }
   return false;
@@ -201,6 +194,7 @@ std::string SimulationOptions::validate() const {
   if (!(wave_period >= 0.2 && wave_period <= 60.0)) return "wave-period must be in [0.2, 60] s";
   if (bursts < 0 || bursts > 1000) return "bursts must be between 0 and 1000";
   if (!(burst_jerk >= 0.0 && burst_jerk <= 1000.0)) return "burst-jerk must be in [0, 1000] m/s³";
+  if (!(bias_share >= 0.0 && bias_share <= 1.0)) return "bias-share must be in [0, 1]";
   return {};
 }
 
@@ -233,26 +227,26 @@ TrueSample true_sample(const TruthState& s, double t, double flown, const ExtraM
 // The readings of sample k from the truth at k - 1, k and k + 1 (`before`, `at`,
 // `after`; the ends repeat `at`) and the rates of the step that follows.
 void read_sample(Mission& m, std::size_t k, const TrueSample& before, const TrueSample& at, const TrueSample& after,
-                 const Pilot::Rates& rates, double dt, const SensorModel& model, Errors& error) {
+                 const Pilot::Rates& rates, double dt, const SensorModel& model, ReadingErrors& error) {
+  using E = ReadingErrors;
   const double t = m.time[k];
   const auto curve = [](double a, double b, double c) { return a - 2.0 * b + c; };
-  m.roll[k] = at.roll + error(Errors::roll, model.roll, t, after.roll - at.roll, curve(before.roll, at.roll, after.roll));
-  m.pitch[k] = at.pitch + error(Errors::pitch, model.pitch, t, rates.pitch, curve(before.pitch, at.pitch, after.pitch));
-  m.heading[k] = wrap(at.heading + error(Errors::heading, model.heading, t, rates.turn,
+  m.roll[k] = at.roll + error(E::roll, model.roll, t, after.roll - at.roll, curve(before.roll, at.roll, after.roll));
+  m.pitch[k] = at.pitch + error(E::pitch, model.pitch, t, rates.pitch, curve(before.pitch, at.pitch, after.pitch));
+  m.heading[k] = wrap(at.heading + error(E::heading, model.heading, t, rates.turn,
                                          curve(before.heading, at.heading, after.heading)));
-  const Errors::Sensor dvl_sensors[3] = {Errors::vx, Errors::vy, Errors::vz};
+  const E::Sensor dvl_sensors[3] = {E::vx, E::vy, E::vz};
   std::vector<double>* dvl[3] = {&m.vx, &m.vy, &m.vz};
   for (int i = 0; i < 3; ++i) {
-    // |error| <= (a|v| + b) / (1 + a) keeps v inside reading ± (a|reading| + b).
     const double v = at.v[i];
-    const double bound = (model.dvl_relative * std::fabs(v) + model.dvl_absolute) / (1.0 + model.dvl_relative);
     const double change = i == 0 ? rates.speed : (i == 1 ? true_sway(t + dt) : true_heave(t + dt)) - v;
-    (*dvl[i])[k] = v + error(dvl_sensors[i], bound, t, change, curve(before.v[i], v, after.v[i]));
+    (*dvl[i])[k] = v + error.scaled(dvl_sensors[i], v, model.dvl_relative, model.dvl_absolute, t, change,
+                                    curve(before.v[i], v, after.v[i]));
   }
   const double z = at.p[2];
-  m.depth[k] = z + error(Errors::depth, (model.depth_absolute + model.depth_relative * std::fabs(z)) / (1.0 + model.depth_relative),
-                         t, after.p[2] - z, curve(before.p[2], z, after.p[2]));
-  m.altitude[k] = at.altitude + error(Errors::altitude, model.altitude, t, after.altitude - at.altitude,
+  m.depth[k] = z + error.scaled(E::depth, z, model.depth_relative, model.depth_absolute, t, after.p[2] - z,
+                                curve(before.p[2], z, after.p[2]));
+  m.altitude[k] = at.altitude + error(E::altitude, model.altitude, t, after.altitude - at.altitude,
                                       curve(before.altitude, at.altitude, after.altitude));
 }
 
@@ -330,15 +324,15 @@ struct SonarCrossings {
 
 // GPS fixes in the local frame: at the first and the last sample, and every second at
 // the surface.
-void add_fixes(Mission& m, const SimulationOptions& o, const ExtraMotion& extra, const SensorModel& model, Errors& error) {
+void add_fixes(Mission& m, const SimulationOptions& o, const ExtraMotion& extra, const SensorModel& model, ReadingErrors& error) {
   const std::size_t n = m.size();
   const std::size_t every = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(o.rate)));
   for (std::size_t k = 0; k < n; ++k) {
     const bool surface_fix = extra.at_surface(m.time[k]) && k % every == 0;
     if (k != 0 && k != n - 1 && !surface_fix) continue;
     m.gps_time.push_back(m.time[k]);
-    m.gps_north.push_back(m.truth_x[k] + error(Errors::gps_north, model.gps_metres, m.time[k]));
-    m.gps_east.push_back(m.truth_y[k] + error(Errors::gps_east, model.gps_metres, m.time[k]));
+    m.gps_north.push_back(m.truth_x[k] + error(ReadingErrors::gps_north, model.gps_metres, m.time[k]));
+    m.gps_east.push_back(m.truth_y[k] + error(ReadingErrors::gps_east, model.gps_metres, m.time[k]));
     // Boxes of the metric bound, usable in memory; io/ recomputes them from the
     // longitudes and latitudes when the mission is written and read back.
     m.gps_north_halfwidth.push_back(model.gps_metres);
@@ -351,7 +345,7 @@ void add_fixes(Mission& m, const SimulationOptions& o, const ExtraMotion& extra,
 
 Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
   RandomSource rng(o.seed);
-  Errors error(rng, o.errors);
+  ReadingErrors error(rng, o);
   Mission m;
   m.model = model;
   m.mine_count = o.mines;
@@ -412,7 +406,7 @@ Mission simulate_mission(const SimulationOptions& o, const SensorModel& model) {
     }
     m.mark_time.push_back(c.time);
     m.mark_mine.push_back(rng.chance(o.unassociated) ? -1 : c.mine);
-    m.mark_range.push_back(c.range + error(Errors::mark, model.mark_range, c.time));
+    m.mark_range.push_back(c.range + error(ReadingErrors::mark, model.mark_range, c.time));
     m.mark_side.push_back(1);
     m.truth_marks_outlier.push_back(0);
     m.truth_marks_mine.push_back(c.mine);

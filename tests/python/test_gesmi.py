@@ -119,6 +119,25 @@ def test_outliers_diagnosis_kalman_and_localize(tmp_path):
     assert all(math.isfinite(x) for x in k.mean[:, 0])
 
 
+def test_bias_noise_missions():
+    m = gesmi.simulate(seed=2, duration=300, errors="bias-noise", bias_share=1.0, drift="flip")
+    error = np.asarray(m.depth) - np.asarray(m.truth_z)
+    assert len(error) == 3001
+    r = m.model["depth_relative"]
+    bound = (m.model["depth_absolute"] + r * np.abs(np.asarray(m.truth_z))) / (1 + r)
+    assert np.all(np.abs(error) <= 0.99 * bound + 1e-12)
+    # A whole bias that flips at the middle: the error is the same affine function of
+    # the depth before, and its opposite after.
+    z = np.asarray(m.truth_z)
+    before, after = np.asarray(m.time) < 150, np.asarray(m.time) >= 150
+    fit = np.polyfit(z[before], error[before], 1)
+    assert np.allclose(error[after], -np.polyval(fit, z[after]), atol=1e-9)
+    with pytest.raises(gesmi.FormatError, match="bias_share and drift go with"):
+        gesmi.simulate(duration=300, bias_share=0.5)
+    with pytest.raises(gesmi.FormatError, match="drift: expected none, ramp or flip"):
+        gesmi.simulate(duration=300, errors="bias-noise", drift="sine")
+
+
 def test_the_inputs_nothing_else_checks_are_named():
     m = gesmi.simulate(seed=27, duration=1800, outliers=1)
     counts = {}

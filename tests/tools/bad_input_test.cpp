@@ -131,6 +131,10 @@ TEST(BadInput, IntegerOptionsOutsideTheirRangeAreRefused) {
       {"mines beyond int", {}, {"simulate", "--seed", "1", "--duration", "600", "--mines", "4294967297"}, {"--mines must be between 0 and 64"}},
       {"bursts beyond int", {}, {"simulate", "--seed", "1", "--duration", "600", "--bursts", "4294967297"}, {"--bursts must be between 0 and 1000"}},
       {"integer beyond long", {}, {"simulate", "--seed", "1", "--outliers", "99999999999999999999"}, {"--outliers: expected an integer"}},
+      {"bias share", {}, {"simulate", "--seed", "1", "--errors", "bias-noise", "--bias-share", "1.5"}, {"--bias-share must be in [0, 1]"}},
+      {"drift alone", {}, {"simulate", "--seed", "1", "--drift", "ramp"}, {"--drift: goes with --errors bias-noise"}},
+      {"unknown drift", {}, {"simulate", "--seed", "1", "--errors", "bias-noise", "--drift", "sine"}, {"--drift: expected none, ramp or flip, got 'sine'"}},
+      {"unknown errors", {}, {"simulate", "--seed", "1", "--errors", "bias"}, {"--errors: expected uniform, worst-case, at-samples, drifting, corners or bias-noise, got 'bias'"}},
       {"localize seed negative", {}, {"localize", scenario, "--simulate", "--seed", "-1"}, {"--seed: must be between 0 and 4294967295"}},
       {"localize seed beyond 32 bits", {}, {"localize", scenario, "--simulate", "--seed", "4294967296"}, {"--seed: must be between 0 and 4294967295"}},
   };

@@ -23,7 +23,8 @@ namespace {
 namespace po = boost::program_options;
 
 constexpr const char* kUsage =
-    "gesmi simulate --preset redermor --seed S -o MISSION.h5 [--errors uniform|worst-case|at-samples|drifting|corners] "
+    "gesmi simulate --preset redermor --seed S -o MISSION.h5 [--errors uniform|worst-case|at-samples|drifting|corners|"
+    "bias-noise [--bias-share F] [--drift none|ramp|flip]] "
     "[--duration T] [--rate HZ] [--mines K] [--missed P] [--unassociated P] [--outliers N] [--surface S [--wave-height H] "
     "[--wave-period T] [--surface-dvl]] [--bursts N [--burst-jerk J]] [--config bounds.yaml] [--skip-existing]";
 
@@ -37,7 +38,13 @@ int run_simulate(std::span<const std::string> args) {
        "uniform, worst-case (a bias at 99 % of each bound), at-samples (at the ends of the bounds, against the motion: "
        "boxes hold at the sample instants only), or drifting (each sensor's error 0.99 x bound x sin(2 pi t / T + phase), T drawn "
        "in [600, 2400] s and the phase from the seed: inside the bounds, but not a constant bias), or corners (at 99.9 % "
-       "of each bound, on the side of the truth's curvature: the truth on its box's corner where the step model is weakest)")
+       "of each bound, on the side of the truth's curvature: the truth on its box's corner where the step model is weakest), or "
+       "bias-noise (heading, DVL, barometer, altitude and mark range: a bias at --bias-share of each bound, DVL and "
+       "barometer split into a scale and an offset with their own signs, plus noise within the rest)")
+      ("bias-share", po::value<std::string>(), "bias-noise: the bias's share of each bound, in [0, 1] (default 0.9)")
+      ("drift", po::value<std::string>(),
+       "bias-noise: none (constant biases, the default), ramp (each bias goes linearly to its opposite by the end) or flip "
+       "(each bias turns to its opposite at the middle of the mission)")
       ("duration", po::value<std::string>()->default_value("5999.4"), "mission length (s)")
       ("rate", po::value<std::string>()->default_value("10"), "sampling rate (Hz)")
       ("mines", po::value<std::string>()->default_value("6"), "number of mines (0..64)")
@@ -64,7 +71,13 @@ int run_simulate(std::span<const std::string> args) {
   o.seed = static_cast<std::uint64_t>(seed);
   const std::string errors = v["errors"].as<std::string>();
   if (!parse_simulated_errors(errors, o.errors))
-    throw UsageError("--errors: expected uniform, worst-case, at-samples, drifting or corners, got " + io::quoted_input(errors));
+    throw UsageError("--errors: expected " + simulated_errors_names() + ", got " + io::quoted_input(errors));
+  for (const char* name : {"bias-share", "drift"})
+    if (v.count(name) && o.errors != SimulatedErrors::bias_noise)
+      throw UsageError(std::string("--") + name + ": goes with --errors bias-noise");
+  if (v.count("bias-share")) o.bias_share = parse_double("--bias-share", v["bias-share"].as<std::string>());
+  if (v.count("drift") && !parse_bias_drift(v["drift"].as<std::string>(), o.drift))
+    throw UsageError("--drift: expected none, ramp or flip, got " + io::quoted_input(v["drift"].as<std::string>()));
   o.duration = parse_double("--duration", v["duration"].as<std::string>());
   o.rate = parse_double("--rate", v["rate"].as<std::string>());
   o.mines = parse_int("--mines", v["mines"].as<std::string>());
@@ -105,6 +118,10 @@ int run_simulate(std::span<const std::string> args) {
     report["mission"] = io::mission_json(mission);
     report["simulation"] = {{"seed", o.seed}, {"errors", errors}, {"missed_marks", mission.truth_missed_marks.size() / 3},
                             {"outliers", outliers}};
+    if (o.errors == SimulatedErrors::bias_noise) {
+      report["simulation"]["bias_share"] = o.bias_share;
+      report["simulation"]["drift"] = bias_drift_name(o.drift);
+    }
   } else {
     std::printf("wrote %s: %zu samples over %.1f s, %d mines, %zu marks (%zu missed, %zu outliers)\n", output.c_str(),
                 mission.size(), mission.time.back(), mission.mine_count, mission.mark_count(),

@@ -1,6 +1,9 @@
 // Missions in Python: read, write, simulate, the sensor model as a dict-like
 // object, the arrays as numpy views, and the mark table's edits.
 
+#include <optional>
+#include <string>
+
 #include <pybind11/stl.h>
 
 #include "io/format_error.h"
@@ -129,11 +132,16 @@ void bind_mission_class(py::module_& m) {
 // simulate(): a reference-like mission with ground truth, as `gesmi simulate` makes it.
 Mission simulated_mission(std::uint64_t seed, const std::string& errors, double duration, double rate, int mines,
                           double missed, double unassociated, int outliers, double surface, double wave_height,
-                          double wave_period, bool surface_dvl, int bursts, double burst_jerk) {
+                          double wave_period, bool surface_dvl, int bursts, double burst_jerk,
+                          std::optional<double> bias_share, std::optional<std::string> drift) {
   SimulationOptions o;
   o.seed = seed;
   if (!parse_simulated_errors(errors, o.errors))
-    throw io::FormatError("simulate: errors: expected uniform, worst-case, at-samples, drifting or corners");
+    throw io::FormatError("simulate: errors: expected " + simulated_errors_names());
+  if ((bias_share || drift) && o.errors != SimulatedErrors::bias_noise)
+    throw io::FormatError("simulate: bias_share and drift go with errors=\"bias-noise\"");
+  if (bias_share) o.bias_share = *bias_share;
+  if (drift && !parse_bias_drift(*drift, o.drift)) throw io::FormatError("simulate: drift: expected none, ramp or flip");
   o.duration = duration;
   o.rate = rate;
   o.mines = mines;
@@ -167,6 +175,7 @@ void bind_mission(py::module_& m) {
         py::arg("rate") = 10.0, py::arg("mines") = 6, py::arg("missed") = 0.0, py::arg("unassociated") = 0.0,
         py::arg("outliers") = 0, py::arg("surface") = 0.0, py::arg("wave_height") = 0.0, py::arg("wave_period") = 6.0,
         py::arg("surface_dvl") = false, py::arg("bursts") = 0, py::arg("burst_jerk") = 10.0,
+        py::arg("bias_share") = std::nullopt, py::arg("drift") = std::nullopt,
         "Simulates a reference-like mission with ground truth (as `gesmi simulate`)");
 }
 
