@@ -273,7 +273,10 @@ def apply(spec, path):
             f.create_dataset(spec["path"], data=data, dtype=dtype)
         elif op == "dset_values":
             d = f[spec["path"]]
-            d[...] = _edit_values(d[()], spec)
+            old = np.asarray(d[()])
+            new = np.asarray(_edit_values(old, spec), dtype=old.dtype)
+            d[...] = new
+            spec["changed"] = old.tobytes() != new.tobytes()  # (a swap of equal rows changes nothing)
         elif op == "link":
             del f[spec["path"]]
             kind = spec["kind"]

@@ -24,6 +24,7 @@ FAILURE_CLASSES = {
     "exit2-overlong": "exit 2 whose message is longer than %d bytes",
     "exit3-no-output": "exit 3 without its output written",
     "temp-left": "a temporary file left behind (any exit code)",
+    "edit-accepted": "a result whose values were edited accepted (exit 0): its digests must refuse it",
 }
 
 MAX_MESSAGE_BYTES = 500
