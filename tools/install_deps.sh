@@ -12,7 +12,7 @@ build="build-essential cmake ninja-build pkg-config ccache
 # The static archives of GESMI_STATIC_ARCHIVES (tools/static_archives.cmake) and what
 # the tests, the benchmarks, the man page and the Python module use.
 rest="hdf5-tools libpixman-1-dev libfontconfig-dev libfreetype-dev libexpat1-dev libbrotli-dev libbz2-dev libaec-dev zlib1g-dev
- libgtest-dev libgmock-dev libbenchmark-dev libmpfi-dev libmpfr-dev libgmp-dev
+ libgtest-dev libgmock-dev libbenchmark-dev libmpfi-dev libmpfr-dev libgmp-dev coinor-libclp-dev
  python3 python3-dev pybind11-dev python3-numpy python3-h5py python3-matplotlib python3-pytest python3-nmea2 python3-xxhash
  gdal-bin python3-jsonschema help2man parallel time"
 case "${1:-test}" in

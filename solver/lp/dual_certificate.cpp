@@ -1,0 +1,66 @@
+#include "solver/lp/dual_certificate.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "solver/interval/interval.h"
+#include "solver/interval/rounding.h"
+
+namespace gesmi {
+namespace {
+
+// lambda_i, or 0 where it is not finite or its sign would meet an infinite bound of the row.
+double usable_multiplier(double lambda, double lower, double upper) {
+  if (!std::isfinite(lambda)) return 0.0;
+  if (lambda > 0.0 && lower == -INFINITY) return 0.0;
+  if (lambda < 0.0 && upper == INFINITY) return 0.0;
+  return lambda;
+}
+
+// Bounds lower <= upper, neither NaN, lower < +infinity, upper > -infinity.
+bool bounds_usable(double lower, double upper) { return lower <= upper && lower < INFINITY && upper > -INFINITY; }
+
+void check(const LinearProgram& lp, std::span<const double> objective, std::span<const double> multipliers) {
+  const auto fail = [](const char* why) { throw std::invalid_argument(std::string("certified_lower_bound: ") + why); };
+  if (objective.size() != lp.columns || multipliers.size() != lp.rows() || lp.row_start.size() != lp.rows() + 1 ||
+      lp.row_upper.size() != lp.rows() || lp.column_lower.size() != lp.columns || lp.column_upper.size() != lp.columns ||
+      lp.row_start.back() != lp.column.size() || lp.value.size() != lp.column.size())
+    fail("sizes differ from the linear program's");
+  for (std::size_t k = 0; k < lp.column.size(); ++k)
+    if (lp.column[k] >= lp.columns || !std::isfinite(lp.value[k])) fail("a coefficient is not finite or out of range");
+  for (const double c : objective)
+    if (!std::isfinite(c)) fail("an objective coefficient is not finite");
+  for (std::size_t i = 0; i < lp.rows(); ++i)
+    if (!bounds_usable(lp.row_lower[i], lp.row_upper[i])) fail("a row's bounds are not an interval");
+  for (std::size_t j = 0; j < lp.columns; ++j)
+    if (!bounds_usable(lp.column_lower[j], lp.column_upper[j])) fail("a column's bounds are not an interval");
+}
+
+}  // namespace
+
+double certified_lower_bound(const LinearProgram& lp, std::span<const double> objective,
+                             std::span<const double> multipliers) {
+  check(lp, objective, multipliers);
+  // d = c - A^T lambda, each component enclosed.
+  std::vector<Interval> reduced(objective.begin(), objective.end());
+  double bound = 0.0;
+  for (std::size_t i = 0; i < lp.rows(); ++i) {
+    const double lambda = usable_multiplier(multipliers[i], lp.row_lower[i], lp.row_upper[i]);
+    if (lambda == 0.0) continue;
+    for (std::size_t k = lp.row_start[i]; k < lp.row_start[i + 1]; ++k)
+      reduced[lp.column[k]] = reduced[lp.column[k]] - Interval(lp.value[k]) * Interval(lambda);
+    bound = add_down(bound, (Interval(lambda) * Interval(lp.row_lower[i], lp.row_upper[i])).lo());
+  }
+  for (std::size_t j = 0; j < lp.columns; ++j)
+    bound = add_down(bound, (reduced[j] * Interval(lp.column_lower[j], lp.column_upper[j])).lo());
+  return bound;  // (terms are finite or -infinity: no NaN)
+}
+
+bool certifies_empty(const LinearProgram& lp, std::span<const double> multipliers) {
+  const std::vector<double> zero(lp.columns, 0.0);
+  return certified_lower_bound(lp, zero, multipliers) > 0.0;
+}
+
+}  // namespace gesmi
