@@ -115,9 +115,11 @@ void write_regimes(H5File& f, const StepRegimeReport& g) {
 // 12), 5 (mark 40); GPS fix 0", empty when there are none.
 std::string unchecked_inputs_text(const UncheckedInputs& u) {
   std::string text;
-  for (std::size_t i = 0; i < u.mines.size(); ++i)
-    text += (i ? ", " : u.mines.size() == 1 ? "mine " : "mines ") + std::to_string(u.mines[i]) + " (mark " + std::to_string(u.marks[i]) + ")";
-  for (const std::size_t fix : u.gps_fixes) text += (text.empty() ? "" : "; ") + std::string("GPS fix ") + std::to_string(fix);
+  for (std::size_t i = 0; i < u.mines.size(); ++i) {
+    text += i ? ", " : u.mines.size() == 1 ? "mine " : "mines ";
+    text += std::to_string(u.mines[i]) + " (mark " + std::to_string(u.marks[i]) + ")";
+  }
+  for (const std::size_t fix : u.gps_fixes) text += (text.empty() ? "GPS fix " : "; GPS fix ") + std::to_string(fix);
   return text;
 }
 

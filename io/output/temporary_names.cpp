@@ -27,11 +27,14 @@ bool dead_temporary(const std::string& name, const std::string& base) {
 
 }  // namespace
 
-std::string temporary_name(const std::string& final_path) { return final_path + kTempMark + std::to_string(::getpid()); }
+std::string temporary_name(const std::string& final_path) {
+  return final_path + kTempMark + std::to_string(::getpid());
+}
 
 void remove_dead_temporaries(const fs::path& folder, const std::string& name) {
   std::error_code ec;
-  for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec), end; !ec && it != end; it.increment(ec)) {
+  const fs::path where = folder.empty() ? fs::path(".") : folder;
+  for (fs::directory_iterator it(where, ec), end; !ec && it != end; it.increment(ec)) {
     if (!dead_temporary(it->path().filename().string(), name)) continue;
     std::error_code ignored;
     fs::remove_all(it->path(), ignored);

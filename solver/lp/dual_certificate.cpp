@@ -24,9 +24,10 @@ bool bounds_usable(double lower, double upper) { return lower <= upper && lower 
 
 void check(const LinearProgram& lp, std::span<const double> objective, std::span<const double> multipliers) {
   const auto fail = [](const char* why) { throw std::invalid_argument(std::string("certified_lower_bound: ") + why); };
-  if (objective.size() != lp.columns || multipliers.size() != lp.rows() || lp.row_start.size() != lp.rows() + 1 ||
-      lp.row_upper.size() != lp.rows() || lp.column_lower.size() != lp.columns || lp.column_upper.size() != lp.columns ||
-      lp.row_start.back() != lp.column.size() || lp.value.size() != lp.column.size())
+  const std::size_t m = lp.rows(), n = lp.columns;
+  if (objective.size() != n || multipliers.size() != m || lp.row_start.size() != m + 1 || lp.row_upper.size() != m ||
+      lp.column_lower.size() != n || lp.column_upper.size() != n || lp.row_start.back() != lp.column.size() ||
+      lp.value.size() != lp.column.size())
     fail("sizes differ from the linear program's");
   for (std::size_t k = 0; k < lp.column.size(); ++k)
     if (lp.column[k] >= lp.columns || !std::isfinite(lp.value[k])) fail("a coefficient is not finite or out of range");

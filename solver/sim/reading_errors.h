@@ -23,7 +23,8 @@ class ReadingErrors {
   /// barometer): within (relative |value| + absolute) / (1 + relative) of the true value,
   /// which keeps it inside the reading's box. The bias-noise mode splits its bias into a
   /// scale (times the value) and an offset; the other modes take the whole bound.
-  double scaled(Sensor sensor, double value, double relative, double absolute, double t, double change, double curvature);
+  double scaled(Sensor sensor, double value, double relative, double absolute, double t, double change,
+                double curvature);
 
  private:
   /// The bias's factor at time t: 1, or its drift (a ramp from 1 to -1 over the mission,

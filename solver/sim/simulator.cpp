@@ -148,8 +148,10 @@ const char* simulated_errors_name(SimulatedErrors errors) {
 
 std::string simulated_errors_names() {
   std::string names;
-  for (const SimulatedErrors e : kAllSimulatedErrors)
-    names += std::string(names.empty() ? "" : e == kAllSimulatedErrors.back() ? " or " : ", ") + simulated_errors_name(e);
+  for (const SimulatedErrors e : kAllSimulatedErrors) {
+    names += names.empty() ? "" : e == kAllSimulatedErrors.back() ? " or " : ", ";
+    names += simulated_errors_name(e);
+  }
   return names;
 }
 
@@ -324,7 +326,8 @@ struct SonarCrossings {
 
 // GPS fixes in the local frame: at the first and the last sample, and every second at
 // the surface.
-void add_fixes(Mission& m, const SimulationOptions& o, const ExtraMotion& extra, const SensorModel& model, ReadingErrors& error) {
+void add_fixes(Mission& m, const SimulationOptions& o, const ExtraMotion& extra, const SensorModel& model,
+               ReadingErrors& error) {
   const std::size_t n = m.size();
   const std::size_t every = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(o.rate)));
   for (std::size_t k = 0; k < n; ++k) {
