@@ -84,6 +84,22 @@ def mutation_count(rng, most):
     return min(rng.choices([1, 2, 3], [7, 2, 1])[0], most)
 
 
+# Inputs that are not regular files, one case in 20: every reader must refuse them before
+# reading (a FIFO without a writer blocks whoever opens it; /dev/zero and /dev/urandom
+# never end).
+SPECIAL_INPUTS = ("fifo", "dev-zero", "dev-urandom", "dev-null", "folder")
+SPECIAL_SHARE = 0.05
+
+
+def make_special(path, kind):
+    if kind == "fifo":
+        os.mkfifo(path)
+    elif kind == "folder":
+        os.mkdir(path)
+    else:
+        os.symlink("/dev/" + kind[len("dev-"):], path)
+
+
 def make_case(reader, index, seed, seeds, inventories, work, options):
     """Creates the case folder with its mutated input; returns the Case."""
     rng = random.Random("%s/%s/%d" % (seed, reader.name, index))
@@ -110,8 +126,13 @@ def make_case(reader, index, seed, seeds, inventories, work, options):
         case.must_name = [args[slot - 1] if args[slot - 1].startswith("--") else "INDEX", "unrecognised option"]
         case.args = substitute(args, case.folder, "", seeds)
         return case
-    seed_name = rng.choice(reader.seeds)
     target = os.path.join(case.folder, reader.input_name)
+    if rng.random() < SPECIAL_SHARE:
+        case.specs = [{"op": "special", "kind": rng.choice(SPECIAL_INPUTS)}]
+        make_special(target, case.specs[0]["kind"])
+        case.args = substitute(command, case.folder, reader.input_name, seeds)
+        return case
+    seed_name = rng.choice(reader.seeds)
     if reader.kind == "hdf5":
         shutil.copy(seeds[seed_name], target)
         for _ in range(mutation_count(rng, options.mutations)):
@@ -151,8 +172,9 @@ def run_case(case, gesmi, timeout, inputs):
 def keep_failure(case, result, failures, left, keep_dir, seed):
     folder = os.path.join(keep_dir, failures[0], os.path.basename(case.folder))
     os.makedirs(folder, exist_ok=True)
-    if case.reader.input_name:
-        shutil.copy(os.path.join(case.folder, case.reader.input_name), folder)
+    kept_input = os.path.join(case.folder, case.reader.input_name)
+    if case.reader.input_name and os.path.isfile(kept_input) and not os.path.islink(kept_input):  # (not a special input)
+        shutil.copy(kept_input, folder)
     with open(os.path.join(folder, "case.json"), "w") as f:
         json.dump({"reader": case.reader.name, "seed": seed, "case": case.index,
                    "args": [a.decode("latin-1") if isinstance(a, bytes) else a for a in case.args],
@@ -273,7 +295,7 @@ def report_accepted(cases):
         groups[(case.reader.name, operations(case))].append(case)
     for (reader, op), items in sorted(groups.items()):
         print("  %4d  %-18s %-24s e.g. %s" % (len(items), reader, op,
-                                            "; ".join(describe(s) for s in items[0].specs[1:]) or items[0].args))
+                                            "; ".join(describe(s) for s in items[0].specs if s["op"] != "seed") or items[0].args))
 
 
 def replay(args):
@@ -283,7 +305,8 @@ def replay(args):
     case.json: "title"; "args" ("@" the input, "$name" a seed file; "arg_encoding":
     "latin-1" for arguments holding bytes that are not UTF-8); "input", the file of
     the folder given as "@", or "generate": {"seed": name, "mutations": [specs]} to
-    make it from a seed with tools/fuzz/hdf5_mutations.py; "exit" (default 2);
+    make it from a seed with tools/fuzz/hdf5_mutations.py, or "special": one of
+    SPECIAL_INPUTS in its place; "exit" (default 2);
     "names", texts the message must contain; "outputs", what an exit 3 writes."""
     work = tempfile.mkdtemp(prefix="gesmi-fuzz-replay-")
     failed = 0
@@ -304,6 +327,8 @@ def replay(args):
                 shutil.copy(seeds[gen["seed"]], os.path.join(case_folder, input_name))
                 for m in gen["mutations"]:
                     hdf5_mutations.apply(m, os.path.join(case_folder, input_name))
+            elif "special" in spec:  # not a regular file (SPECIAL_INPUTS)
+                make_special(os.path.join(case_folder, input_name), spec["special"])
             elif input_name:
                 shutil.copy(os.path.join(folder, input_name), case_folder)
             case = Case(targets.Reader(spec["title"], "replay", [], [], input_name), 0)
