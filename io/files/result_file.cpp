@@ -431,7 +431,7 @@ bool read_tube(const H5File& f, std::size_t n, std::optional<DigestKind> verifie
     std::vector<Interval>* tube[3] = {&d.px, &d.py, &d.pz};
     empty_domain = read_bounds(f, "/tube", tube, n, verified);
   }
-  if (parts.increments && parts.tube && !parts.tube_rows) {
+  if (parts.keeps_increments()) {
     std::vector<Interval>* increments[3] = {&d.dx, &d.dy, &d.dz};
     empty_domain = read_bounds(f, "/increments", increments, n - 1, verified) || empty_domain;
   }
@@ -548,8 +548,8 @@ void verify_unread(const H5File& f, std::size_t n, std::size_t k, const ResultPa
         },
         [](std::size_t, std::size_t) {});
   };
-  if (!parts.tube && !parts.tube_rows) check_bounds("/tube", n);
-  if (!(parts.increments && parts.tube) || parts.tube_rows) check_bounds("/increments", n == 0 ? 0 : n - 1);
+  if (!parts.reads_tube()) check_bounds("/tube", n);
+  if (!parts.keeps_increments()) check_bounds("/increments", n == 0 ? 0 : n - 1);
   if (parts.waterfall) return;
   Waterfall unused;
   if (format_version >= 3)
@@ -677,7 +677,7 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
   if (parts.waterfall && r.format_version < 3) read_dense_waterfall(f, n, k, verified, s.waterfall);
   if (verified) {
     verify_root_digest(f, r, *verified);  // first: it also covers a dataset digest recomputed with its edit
-    verify_unread(f, n, k, parts, r.format_version, *verified);
+    if (parts.check_unread) verify_unread(f, n, k, parts, r.format_version, *verified);
   }
   if (s.report.consistent) check_consistent_domains(f, empty_domain, s.domains.mines);
   return r;

@@ -54,8 +54,8 @@ using TubeRows = std::function<void(const SolveResult& result, std::size_t first
                                     std::span<const Interval> y, std::span<const Interval> z)>;
 
 /// The parts of a result a reader needs besides its attributes, times, mine boxes and
-/// mark table. Parts left out stay empty; the root digest still covers their digests,
-/// and every dataset read is checked against its own.
+/// mark table. Parts left out stay empty, but are still checked against their digests
+/// (in blocks, none kept), as every dataset read is.
 struct ResultParts {
   bool tube = true;        // the tube (warm starts, exports)
   bool increments = true;  // with the tube (warm starts)
@@ -66,6 +66,12 @@ struct ResultParts {
   /// interval in a consistent result) is thrown after the blocks it covers were handed
   /// over, so the receiver writes to a temporary output and discards it.
   TubeRows tube_rows = nullptr;
+  /// Off only for a read of a file that a streamed read (`tube_rows`) then reads whole and
+  /// checks: the export of the tube CSV reads the status first.
+  bool check_unread = true;
+
+  bool reads_tube() const { return tube_rows || tube; }
+  bool keeps_increments() const { return increments && tube && !tube_rows; }
 };
 
 /// Records in `result` what it was computed from: the digests of the mission's

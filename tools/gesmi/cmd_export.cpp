@@ -53,8 +53,10 @@ int export_result(const po::variables_map& v, const std::string& format, const s
   const std::string path = v["file"].as<std::string>();
   Progress progress("gesmi export:");  // on a terminal, for long runs only (progress.h)
   progress.update(-1.0, "reading " + path);
-  // The tube CSV reads the tube again, block by block, as it writes its rows.
-  const io::SolveResult r = io::read_result(path, {.tube = format == "geojson", .increments = false, .waterfall = false});
+  // The tube CSV reads the whole result again, the tube block by block as it writes its
+  // rows, and checks every digest then.
+  const io::SolveResult r = io::read_result(
+      path, {.tube = format == "geojson", .increments = false, .waterfall = false, .check_unread = format != "tube-csv"});
   if (!r.solution.report.consistent) progress.finish();  // before the refusal's line, or the notes below
   if (!accept_result_status(v, "export", path, r.solution.report.consistent)) return kExitInconsistent;
   // (the CSVs' note on NaN columns comes once they are written: a tube read again may
