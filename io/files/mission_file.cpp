@@ -22,13 +22,13 @@
 namespace gesmi::io {
 namespace {
 
-constexpr const char* kFormat = "gesmi-mission";
+constexpr const char* kMissionFormat = "gesmi-mission";
 // 2: the sensor model gained max_jerk and step_model (version-1 files take their defaults).
 // 3: the sensor model gained max_depth_rate and max_altitude_rate; the optional root
 //    attribute epoch_utc (ISO 8601, whole seconds, Z).
 // 4: the sensor model gained max_speed and the surface regime's keys (surface_layer_depth,
 //    surface_max_jerk, surface_max_speed).
-constexpr H5FormatVersions kVersions{.current = 4, .oldest = 1, .when_absent = 0};
+constexpr H5FormatVersions kMissionVersions{.current = 4, .oldest = 1, .when_absent = 0};
 
 std::string half_width_dataset(const NavChannel& c) { return "/nav/half_widths/" + std::string(c.name); }
 
@@ -290,7 +290,7 @@ Mission MissionReader::read(TruthReading truth) const {
   const H5File& f = file_;
   const std::string& path = path_;
   Mission m;
-  const std::int64_t version = check_format(f, kFormat, "gesmi mission", kVersions);
+  const std::int64_t version = check_format(f, kMissionFormat, "gesmi mission", kMissionVersions);
   const auto required_double = [&](const std::string& object, const std::string& name) {
     const auto v = f.double_attribute(object, name);
     if (!v) throw FormatError(path + ": " + object + ": missing attribute " + name);
@@ -462,7 +462,7 @@ void write_mission(const Mission& m, const std::string& path) {
     if (!m.truth_marks_outlier.empty()) f.write("/truth/marks_outlier", m.truth_marks_outlier, mk);
     if (!m.truth_marks_mine.empty()) f.write("/truth/marks_mine", m.truth_marks_mine, mk);
     if (!m.truth_gps_outlier.empty()) f.write("/truth/gps_outlier", m.truth_gps_outlier, g);
-    write_format(f, kFormat, kVersions);
+    write_format(f, kMissionFormat, kMissionVersions);
     write_origin(f, m.origin);
     f.set_attribute("/", "mine_count", static_cast<std::int64_t>(m.mine_count));
     if (m.epoch) f.set_attribute("/", "epoch_utc", format_iso8601(*m.epoch));

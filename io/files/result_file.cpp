@@ -22,7 +22,7 @@
 namespace gesmi::io {
 namespace {
 
-constexpr const char* kFormat = "gesmi-result";
+constexpr const char* kResultFormatName = "gesmi-result";
 // 1: before digests (no format_version attribute); 2: per-dataset and root SHA-256;
 // 3: the waterfall stored as its feasible cells only; 4: the model keys of mission
 // format 3 (max_depth_rate, max_altitude_rate) and the mission's epoch_utc; 5: the
@@ -30,7 +30,7 @@ constexpr const char* kFormat = "gesmi-result";
 // 6: XXH3-128 digests (attributes `xxh128`, `navigation_xxh128`, ...) instead of SHA-256;
 // 7: the model keys of mission format 4 (max_speed, the surface regime's) and the step
 // regimes' report (/regimes).
-constexpr H5FormatVersions kVersions{.current = kResultFormat, .oldest = 1, .when_absent = 1};
+constexpr H5FormatVersions kResultVersions{.current = kResultFormat, .oldest = 1, .when_absent = 1};
 
 // The mission format whose model keys a result of this format holds.
 int model_keys_version(std::int64_t format_version) { return format_version >= 7 ? 4 : format_version >= 4 ? 3 : 2; }
@@ -616,7 +616,7 @@ void write_result(const SolveResult& r, const std::string& path) {
     write_digested(f, "/marks/mine", s.mark_mine, s.mark_mine.size(), kResultDigest);
     write_digested(f, "/marks/side", s.mark_side, s.mark_side.size(), kResultDigest);
     write_digested(f, "/gps/outlier", s.gps_outlier, s.gps_outlier.size(), kResultDigest);
-    write_format(f, kFormat, kVersions);
+    write_format(f, kResultFormatName, kResultVersions);
     write_model_attributes(f, "/model", s.model);
     const std::vector<std::pair<std::string, std::string>> fields = root_fields(r, kResultFormat);
     const std::string digest = digest_name(kResultDigest);
@@ -656,7 +656,7 @@ SolveResult read_result(const std::string& path, ResultParts parts) {
   const H5File f = H5File::open_read(path);
   SolveResult r;
   MissionSolution& s = r.solution;
-  r.format_version = check_format(f, kFormat, "gesmi result", kVersions);
+  r.format_version = check_format(f, kResultFormatName, "gesmi result", kResultVersions);
   // The digests to check: none in format 1.
   const std::optional<DigestKind> verified =
       r.format_version >= 2 ? std::optional(result_digest_kind(r.format_version)) : std::nullopt;

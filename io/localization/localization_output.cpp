@@ -2,7 +2,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <numbers>
 
 #include "io/output/atomic_output.h"
 #include "io/output/output_set.h"
@@ -12,11 +11,11 @@
 #include "io/localization/localization_json.h"
 #include "io/plot/localization_picture.h"
 #include "solver/setinv/localization/range_data.h"
+#include "solver/model/angles.h"
 
 namespace gesmi::io {
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr std::size_t kMaxListedSets = 64;  // component_outliers' default max_sets
 
 std::string format(const char* pattern, auto... values) {
@@ -124,15 +123,16 @@ std::string localization_summary(const LocalizationProblem& p, const Localizatio
   for (std::size_t k = 0; k < r.hypotheses.size(); ++k) {
     const LocalizationHypothesis& h = r.hypotheses[k];
     const Box& b = h.component.hull;
-    s += format("  #%zu x %s  y %s  theta %s deg  (%zu inner, %zu boundary boxes)%s\n", k + 1, interval_text(b[0], 1).c_str(),
-                interval_text(b[1], 1).c_str(), interval_text(b[2], kDeg).c_str(), h.component.inner.size(),
-                h.component.boundary.size(), h.contains_truth ? "  <- holds the true pose" : "");
+    s += format("  #%zu x %s  y %s  theta %s deg  (%zu inner, %zu boundary boxes)%s\n", k + 1,
+                interval_text(b[0], 1).c_str(), interval_text(b[1], 1).c_str(),
+                interval_text(b[2], kDegreesPerRadian).c_str(), h.component.inner.size(), h.component.boundary.size(),
+                h.contains_truth ? "  <- holds the true pose" : "");
     s += outlier_lines(p, h);
     s += "     associations: " + association_text(p, h) + "\n";
   }
   s += safety_lines(p, r);
   if (p.truth)
-    s += format("true pose (%.4f, %.4f, %.3f deg) %s\n", p.truth->x, p.truth->y, p.truth->theta * kDeg,
+    s += format("true pose (%.4f, %.4f, %.3f deg) %s\n", p.truth->x, p.truth->y, p.truth->theta * kDegreesPerRadian,
                 r.truth_enclosed ? "is enclosed" : "is NOT enclosed");
   return s;
 }

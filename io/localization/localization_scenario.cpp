@@ -6,7 +6,6 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -15,11 +14,11 @@
 #include "io/text/message_text.h"
 #include "io/text/strict_yaml.h"
 #include "io/text/yaml_fields.h"
+#include "solver/model/angles.h"
 
 namespace gesmi::io {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr std::size_t kMaxNameLength = 200;
 constexpr const char* kNoEchoText = "none";  // `range: none`: the sonar heard no echo
 
@@ -60,14 +59,14 @@ SensorIndex read_sensors(const Reader& r, const YAML::Node& root, LocalizationPr
     const std::string name = r.text(r.required(s, key, "name"), key + ".name");
     if (index.count(name)) r.fail(s["name"], key + ".name", "duplicate sensor name " + quoted_input(name));
     const double x = r.number_or(s, key, "x", 0.0), y = r.number_or(s, key, "y", 0.0);
-    const double heading = r.number_or(s, key, "heading_deg", 0.0) * kDeg;
+    const double heading = r.number_or(s, key, "heading_deg", 0.0) * kRadiansPerDegree;
     if (type == "range") {
       r.only_keys(s, key, {"name", "type", "x", "y", "heading_deg", "half_aperture_deg", "precision", "max_range", "blind_distance"});
       const double gamma = r.number(r.required(s, key, "half_aperture_deg"), key + ".half_aperture_deg");
       if (!(gamma > 0.0 && gamma < 45.0)) r.fail(s["half_aperture_deg"], key + ".half_aperture_deg", "must be in (0, 45) degrees");
       const double alpha = r.number(r.required(s, key, "precision"), key + ".precision");
       if (!(alpha >= 0.0 && alpha < 1.0)) r.fail(s["precision"], key + ".precision", "relative precision must be in [0, 1)");
-      RangeSensor sensor{name, x, y, heading, gamma * kDeg, alpha};
+      RangeSensor sensor{name, x, y, heading, gamma * kRadiansPerDegree, alpha};
       sensor.max_range = r.number_or(s, key, "max_range", sensor.max_range);
       if (!(sensor.max_range > 0.0)) r.fail(s["max_range"], key + ".max_range", "must be positive");
       sensor.blind_distance = r.number_or(s, key, "blind_distance", 0.0);
@@ -81,7 +80,7 @@ SensorIndex read_sensors(const Reader& r, const YAML::Node& root, LocalizationPr
       const double delta = r.number(r.required(s, key, "precision_deg"), key + ".precision_deg");
       if (!(delta >= 0.0 && delta < 90.0)) r.fail(s["precision_deg"], key + ".precision_deg", "must be in [0, 90) degrees");
       index[name] = {false, p.bearing_sensors.size()};
-      p.bearing_sensors.push_back({name, x, y, heading, delta * kDeg});
+      p.bearing_sensors.push_back({name, x, y, heading, delta * kRadiansPerDegree});
     } else {
       r.fail(s["type"], key + ".type", "expected 'range' or 'bearing', got " + quoted_input(type));
     }
@@ -117,7 +116,8 @@ void read_measurements(const Reader& r, const YAML::Node& root, const SensorInde
       range_numbers.push_back(i + 1);
     } else {
       r.only_keys(m, key, {"sensor", "bearing_deg"});
-      p.bearings.push_back({found->second.second, r.number(r.required(m, key, "bearing_deg"), key + ".bearing_deg") * kDeg});
+      p.bearings.push_back({found->second.second,
+                            r.number(r.required(m, key, "bearing_deg"), key + ".bearing_deg") * kRadiansPerDegree});
       bearing_numbers.push_back(i + 1);
     }
   }
@@ -133,8 +133,9 @@ void read_prior(const Reader& r, const YAML::Node& root, LocalizationProblem& p)
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     const std::string key = Reader::item("prior.boxes", i);
     r.only_keys(boxes[i], key, {"x", "y", "theta_deg"});
-    const Interval theta = r.range(r.required(boxes[i], key, "theta_deg"), key + ".theta_deg", kDeg);
-    if (theta.width() > 360.0 * kDeg * (1 + 1e-12)) r.fail(boxes[i]["theta_deg"], key + ".theta_deg", "wider than 360 degrees");
+    const Interval theta = r.range(r.required(boxes[i], key, "theta_deg"), key + ".theta_deg", kRadiansPerDegree);
+    if (theta.width() > 360.0 * kRadiansPerDegree * (1 + 1e-12))
+      r.fail(boxes[i]["theta_deg"], key + ".theta_deg", "wider than 360 degrees");
     p.priors.push_back(Box{r.range(r.required(boxes[i], key, "x"), key + ".x", 1.0),
                            r.range(r.required(boxes[i], key, "y"), key + ".y", 1.0), theta});
   }
@@ -206,7 +207,7 @@ void read_truth(const Reader& r, const YAML::Node& root, LocalizationProblem& p)
   if (!truth) return;
   r.only_keys(truth, "truth", {"x", "y", "theta_deg"});
   p.truth = Pose<double>{r.number(r.required(truth, "truth", "x"), "truth.x"), r.number(r.required(truth, "truth", "y"), "truth.y"),
-                         r.number(r.required(truth, "truth", "theta_deg"), "truth.theta_deg") * kDeg};
+                         r.number(r.required(truth, "truth", "theta_deg"), "truth.theta_deg") * kRadiansPerDegree};
 }
 
 LocalizationProblem scenario_from(const YAML::Node& root, const std::string& source) {
@@ -274,7 +275,8 @@ std::string localization_measurements_yaml(const LocalizationProblem& p) {
     out << "}\n";
   }
   for (const BearingMeasurement& m : p.bearings)
-    out << "  - {sensor: " << p.bearing_sensors[m.sensor].name << ", bearing_deg: " << m.bearing / kDeg << "}\n";
+    out << "  - {sensor: " << p.bearing_sensors[m.sensor].name << ", bearing_deg: " << m.bearing / kRadiansPerDegree
+        << "}\n";
   return out.str();
 }
 

@@ -2,16 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include <cairo.h>
 
 #include "io/plot/canvas.h"
+#include "solver/model/angles.h"
 
 namespace gesmi::io {
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 const Rgb kBlack{0, 0, 0}, kGrey{0.5, 0.5, 0.5}, kInner{0.85, 0.1, 0.1}, kBoundary{0.95, 0.8, 0.1},
     kLandmark{0.1, 0.3, 0.9}, kTruth{0.0, 0.6, 0.2}, kHull{0.3, 0.3, 0.3};
 
@@ -81,7 +80,7 @@ void draw_map(Canvas& c, const DataFrame& f, const LocalizationProblem& p, doubl
 void draw_pavings(Canvas& c, const DataFrame& f, const LocalizationResult& r, std::size_t a, std::size_t b, double unit_b) {
   const auto draw = [&](const Paving& paving, Rgb colour) {
     // Angles are drawn one turn either side too, so that wrapped hulls show all boxes.
-    const double turn = b == 2 ? 2.0 * std::numbers::pi * unit_b : 0.0;
+    const double turn = b == 2 ? kTwoPi * unit_b : 0.0;
     for (std::size_t i = 0; i < paving.size(); ++i) {
       const auto box = paving.box(i);
       for (double shift : {-turn, 0.0, turn}) {
@@ -114,7 +113,7 @@ void draw_truth_xy(Canvas& c, const DataFrame& f, const LocalizationProblem& p, 
 
 void draw_truth_xtheta(Canvas& c, const DataFrame& f, const LocalizationProblem& p) {
   if (!p.truth) return;
-  double th = p.truth->theta * kDeg;
+  double th = p.truth->theta * kDegreesPerRadian;
   while (th > f.y1) th -= 360.0;
   while (th < f.y0) th += 360.0;
   c.dot(f.px(p.truth->x), f.py(th), 4.0, kTruth);
@@ -143,7 +142,7 @@ void write_localization_picture(const std::string& png_path, const LocalizationP
   if (p.truth) world.add(p.truth->x, p.truth->y);
   if (world.empty()) world = {p.priors[0][0].lo(), p.priors[0][0].hi(), p.priors[0][1].lo(), p.priors[0][1].hi()};
   world = world.padded(0.05, 0.5);
-  const double theta0 = p.priors[0][2].lo() * kDeg, theta1 = p.priors[0][2].hi() * kDeg;
+  const double theta0 = p.priors[0][2].lo() * kDegreesPerRadian, theta1 = p.priors[0][2].hi() * kDegreesPerRadian;
   const double panel_w = 600, panel_h = 420;
   c.text(20, 24, "gesmi localize: " + (p.name.empty() ? std::string("scenario") : p.name) +
                      "   (red: inner boxes, yellow: boundary boxes, green: true pose, #k: hypotheses)", 15, kBlack);
@@ -155,7 +154,7 @@ void write_localization_picture(const std::string& png_path, const LocalizationP
   c.axes(xy, "x (m)", "y (m)");
 
   const DataFrame xt{xy.x0, xy.x1, theta0, theta1, 770, 50, panel_w, panel_h};
-  draw_pavings(c, xt, r, 0, 2, kDeg);
+  draw_pavings(c, xt, r, 0, 2, kDegreesPerRadian);
   draw_truth_xtheta(c, xt, p);
   c.axes(xt, "x (m)", "theta (deg)");
 
@@ -172,13 +171,13 @@ void write_localization_picture(const std::string& png_path, const LocalizationP
     c.axes(zxy, "x (m), zoom on the hypotheses", "y (m)");
     double t0 = kInf, t1 = -kInf;
     for (const LocalizationHypothesis& h : r.hypotheses) {
-      t0 = std::min(t0, h.component.hull[2].lo() * kDeg);
-      t1 = std::max(t1, h.component.hull[2].hi() * kDeg);
+      t0 = std::min(t0, h.component.hull[2].lo() * kDegreesPerRadian);
+      t1 = std::max(t1, h.component.hull[2].hi() * kDegreesPerRadian);
     }
     const double pad = std::max(0.15 * (t1 - t0), 0.5);
     const DataFrame zxt{zxy.x0, zxy.x1, t0 - pad, t1 + pad, 770, 560, panel_w, panel_h};
-    draw_pavings(c, zxt, r, 0, 2, kDeg);
-    draw_hulls(c, zxt, r, 2, kDeg);
+    draw_pavings(c, zxt, r, 0, 2, kDegreesPerRadian);
+    draw_hulls(c, zxt, r, 2, kDegreesPerRadian);
     draw_truth_xtheta(c, zxt, p);
     c.axes(zxt, "x (m), zoom", "theta (deg)");
   }

@@ -8,14 +8,13 @@
 #include "solver/setinv/datum_tests.h"
 #include "solver/setinv/outliers/gomne.h"
 #include "solver/setinv/outliers/outlier_refinement.h"
+#include "solver/setinv/point_math.h"
 
 namespace gesmi {
 namespace {
 
 double square(double x) { return x * x; }
 Interval square(const Interval& x) { return sqr(x); }  // tighter than x * x when x holds 0
-using std::exp;
-using std::sqrt;
 
 struct GaussianDensity {
   std::vector<double> t;

@@ -1,12 +1,11 @@
 #include "solver/sim/reading_errors.h"
+#include "solver/model/angles.h"
 
 #include <cmath>
-#include <numbers>
 
 namespace gesmi {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kInside = 0.99;  // errors at most 99 % of their bound
 
 }  // namespace

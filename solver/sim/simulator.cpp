@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "solver/mission/between_readings.h"
 #include "solver/model/euler.h"
@@ -11,11 +10,11 @@
 #include "solver/sim/random_source.h"
 #include "solver/sim/reading_errors.h"
 #include "solver/sim/survey_plan.h"
+#include "solver/model/angles.h"
 
 namespace gesmi {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kMaxTurnRate = 0.045;   // rad/s: below the model's 0.05
 constexpr double kMaxPitchRate = 0.004;  // rad/s
 constexpr double kMaxSpeedRate = 0.1;    // m/s^2: below the model's 0.2

@@ -14,6 +14,7 @@
 //    north/east axes).
 
 #include "io/geodesy.h"
+#include "tests/support/geodetic_sampling.h"
 
 #include <GeographicLib/Geodesic.hpp>
 #include <gtest/gtest.h>
@@ -67,14 +68,7 @@ struct IndependentFrame {
   }
 };
 
-GeoOrigin destination(const GeoOrigin& from, double azimuth_deg, double distance) {
-  GeoOrigin to{};
-  GeographicLib::Geodesic::WGS84().Direct(from.latitude, from.longitude, azimuth_deg, distance, to.latitude,
-                                          to.longitude);
-  return to;
-}
-
-const GeoOrigin kOrigins[] = {{0.0, 10.0},   {48.212920614, -4.458227931}, {70.0, 20.0}, {80.0, -60.0},
+const GeoOrigin kMarginOrigins[] = {{0.0, 10.0},   {48.212920614, -4.458227931}, {70.0, 20.0}, {80.0, -60.0},
                               {89.0, 135.0}, {-89.0, 0.0},                 {-60.0, 180.0}, {30.0, -179.999}};
 
 std::string where(const GeoOrigin& o, double azimuth, double distance) {
@@ -85,12 +79,12 @@ std::string where(const GeoOrigin& o, double azimuth, double distance) {
 
 TEST(GeodesyMarginsSoundness, TheFrameIsTheOrthographicProjectionOfTheSurfacePoint) {
   double worst = 0.0;
-  for (const GeoOrigin& origin : kOrigins) {
+  for (const GeoOrigin& origin : kMarginOrigins) {
     const LocalFrame frame(origin);
     const IndependentFrame oracle(origin);
     for (double azimuth = 0.0; azimuth < 360.0; azimuth += 15.0)
       for (const double distance : {0.0, 1.0, 2500.0, 9999.0, 99999.0}) {
-        const GeoOrigin p = destination(origin, azimuth, distance);
+        const GeoOrigin p = test::geodesic_destination(origin, azimuth, distance);
         const NorthEast got = frame.to_local(p.latitude, p.longitude);
         long double n, e;
         oracle.project(surface_point(p.latitude, p.longitude), n, e);
@@ -112,7 +106,7 @@ Mission mission_with_fix(const GeoOrigin& origin, double azimuth, double distanc
   Mission m;
   m.origin = origin;
   m.gps_time = {0.0, 1.0};
-  const GeoOrigin far = destination(origin, azimuth, distance);
+  const GeoOrigin far = test::geodesic_destination(origin, azimuth, distance);
   m.gps_latitude = {origin.latitude, far.latitude};
   m.gps_longitude = {origin.longitude, far.longitude};
   return m;
@@ -130,7 +124,7 @@ TEST(GeodesyMarginsSoundness, HeadingMarginHoldsEveryAzimuthOverTheMissionArea) 
   int failures = 0;
   std::string first;
   double tightest = 0.0;  // largest ratio of a turn to the margin
-  for (const GeoOrigin& origin : kOrigins) {
+  for (const GeoOrigin& origin : kMarginOrigins) {
     const IndependentFrame oracle(origin);
     for (const double fix_distance : {0.0, 10000.0, 50000.0, 80000.0, 99999.0}) {
       Mission m = mission_with_fix(origin, 45.0, fix_distance);
@@ -140,7 +134,7 @@ TEST(GeodesyMarginsSoundness, HeadingMarginHoldsEveryAzimuthOverTheMissionArea) 
       const double extent = std::min(fix_distance + 2000.0, kLocalFrameZone);
       for (double bearing = 0.0; bearing < 360.0; bearing += 10.0)
         for (const double fraction : {0.5, 1.0}) {
-          const GeoOrigin p = destination(origin, bearing, extent * fraction);
+          const GeoOrigin p = test::geodesic_destination(origin, bearing, extent * fraction);
           for (double alpha = 0.0; alpha < 360.0; alpha += 15.0) {
             const long double turn = std::fabs(frame_turn(oracle, p, alpha));
             tightest = std::max(tightest, static_cast<double>(turn / m.heading_frame_margin));
@@ -175,7 +169,7 @@ struct BoxCheck {
 };
 
 void check_fix_boxes(SensorModel model, bool given_bounds, BoxCheck& c) {
-  for (const GeoOrigin& origin : kOrigins) {
+  for (const GeoOrigin& origin : kMarginOrigins) {
     const IndependentFrame oracle(origin);
     for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) {
       Mission m = mission_with_fix(origin, azimuth, 99999.0);

@@ -8,6 +8,7 @@
 
 #include "io/geodesy.h"
 #include "solver/mission/frame_scale.h"
+#include "tests/support/geodetic_sampling.h"
 
 #include <GeographicLib/Constants.hpp>
 #include <GeographicLib/Geodesic.hpp>
@@ -29,19 +30,11 @@ const double kRadius = GeographicLib::Constants::WGS84_a() * (1.0 - GeographicLi
 const double kChordBound = std::pow(kZone, 3) / (3.0 * kRadius * kRadius);  // 8.3 m
 const double kScaleBound = kZone * kZone / (2.0 * kRadius * kRadius);        // 1.25e-4
 
-const GeoOrigin kOrigins[] = {{48.212920614, -4.458227931}, {0.0, 10.0}, {70.0, 20.0}, {-45.0, 170.0}};
-
-GeoOrigin destination(const GeoOrigin& from, double azimuth_deg, double distance) {
-  GeoOrigin to{};
-  Geodesic::WGS84().Direct(from.latitude, from.longitude, azimuth_deg, distance, to.latitude, to.longitude);
-  return to;
-}
-
 // The angle between true north at p and the local frame's north axis, measured by
 // GeographicLib: the frame direction of a 1 m step north from p.
 double true_convergence(const GeoOrigin& origin, const GeoOrigin& p) {
   const LocalFrame frame(origin);
-  const GeoOrigin north = destination(p, 0.0, 1.0);
+  const GeoOrigin north = test::geodesic_destination(p, 0.0, 1.0);
   const NorthEast a = frame.to_local(p.latitude, p.longitude), b = frame.to_local(north.latitude, north.longitude);
   return std::fabs(std::atan2(b.east - a.east, b.north - a.north));
 }
@@ -60,7 +53,7 @@ double frame_distance(const LocalFrame& frame, const GeoOrigin& a, const GeoOrig
 TEST(Geodesy, PointsConvertBackAndForthWithin10Nanometres) {
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> coordinate(-kZone / std::numbers::sqrt2, kZone / std::numbers::sqrt2);
-  for (const GeoOrigin& origin : kOrigins) {
+  for (const GeoOrigin& origin : test::kFrameOrigins) {
     const LocalFrame frame(origin);
     for (int i = 0; i < 2000; ++i) {
       const double north = coordinate(rng), east = coordinate(rng);
@@ -76,12 +69,13 @@ TEST(Geodesy, PointsConvertBackAndForthWithin10Nanometres) {
 // projected), and the bound that says the projection is the one measured.
 TEST(Geodesy, DistancesAcrossTheZoneDifferFromTheSurfaceByTheChordBound) {
   double worst = 0.0;
-  for (const GeoOrigin& origin : kOrigins) {
+  for (const GeoOrigin& origin : test::kFrameOrigins) {
     const LocalFrame frame(origin);
     for (double azimuth = 0.0; azimuth < 180.0; azimuth += 7.5) {
       // Across the whole zone through the origin (the worst case, 200 km), and from
       // the origin to its edge.
-      const GeoOrigin a = destination(origin, azimuth, kZone), b = destination(origin, azimuth + 180.0, kZone);
+      const GeoOrigin a = test::geodesic_destination(origin, azimuth, kZone),
+                      b = test::geodesic_destination(origin, azimuth + 180.0, kZone);
       const double across = std::fabs(surface_distance(a, b) - frame_distance(frame, a, b));
       const double radial = std::fabs(surface_distance(origin, a) - frame_distance(frame, origin, a));
       EXPECT_LE(across, 1.02 * kChordBound) << origin.latitude << " " << azimuth;
@@ -92,11 +86,11 @@ TEST(Geodesy, DistancesAcrossTheZoneDifferFromTheSurfaceByTheChordBound) {
   // Random pairs of points of the zone.
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> azimuth(0.0, 360.0), radius(0.0, 1.0);
-  for (const GeoOrigin& origin : kOrigins) {
+  for (const GeoOrigin& origin : test::kFrameOrigins) {
     const LocalFrame frame(origin);
     for (int i = 0; i < 2000; ++i) {
-      const GeoOrigin a = destination(origin, azimuth(rng), kZone * std::sqrt(radius(rng)));
-      const GeoOrigin b = destination(origin, azimuth(rng), kZone * std::sqrt(radius(rng)));
+      const GeoOrigin a = test::geodesic_destination(origin, azimuth(rng), kZone * std::sqrt(radius(rng)));
+      const GeoOrigin b = test::geodesic_destination(origin, azimuth(rng), kZone * std::sqrt(radius(rng)));
       worst = std::max(worst, std::fabs(surface_distance(a, b) - frame_distance(frame, a, b)));
     }
   }
@@ -110,12 +104,12 @@ TEST(Geodesy, TheFrameScaleAlongAPathStaysWithinTheMarginAtTheZonesEdge) {
   // A 10 m step at the edge of the zone, radial and tangential: the frame shortens
   // radial steps by cos(d/R), so a path's error grows with its length (docs/formats.md).
   double worst = 0.0;
-  for (const GeoOrigin& origin : kOrigins) {
+  for (const GeoOrigin& origin : test::kFrameOrigins) {
     const LocalFrame frame(origin);
     for (double azimuth = 0.0; azimuth < 360.0; azimuth += 30.0) {
-      const GeoOrigin edge = destination(origin, azimuth, kZone - 10.0);
+      const GeoOrigin edge = test::geodesic_destination(origin, azimuth, kZone - 10.0);
       for (const double turn : {0.0, 90.0}) {
-        const GeoOrigin step = destination(edge, azimuth + turn, 10.0);
+        const GeoOrigin step = test::geodesic_destination(edge, azimuth + turn, 10.0);
         const double scale = frame_distance(frame, edge, step) / surface_distance(edge, step);
         worst = std::max(worst, std::fabs(1.0 - scale));
       }
@@ -129,11 +123,11 @@ TEST(Geodesy, TheFrameScaleAlongAPathStaysWithinTheMarginAtTheZonesEdge) {
   EXPECT_LE(worst, frame_scale_within(kZone));
   for (const double within : {1000.0, 10000.0, 50000.0}) {
     double inside = 0.0;
-    for (const GeoOrigin& origin : kOrigins) {
+    for (const GeoOrigin& origin : test::kFrameOrigins) {
       const LocalFrame frame(origin);
       for (double azimuth = 0.0; azimuth < 360.0; azimuth += 30.0) {
-        const GeoOrigin edge = destination(origin, azimuth, within - 10.0);
-        const GeoOrigin step = destination(edge, azimuth, 10.0);
+        const GeoOrigin edge = test::geodesic_destination(origin, azimuth, within - 10.0);
+        const GeoOrigin step = test::geodesic_destination(edge, azimuth, 10.0);
         inside = std::max(inside, std::fabs(1.0 - frame_distance(frame, edge, step) / surface_distance(edge, step)));
       }
     }
@@ -165,7 +159,7 @@ TEST(Geodesy, DepthScaleMarginHoldsTheDepthEffect) {
   EXPECT_LT(deepest(m), 116.5 + rates + band + 0.001);
   // A mission's margin is the depth effect there.
   m.gps_time = {0.0};
-  m.origin = kOrigins[0];
+  m.origin = test::kFrameOrigins[0];
   m.gps_latitude = {m.origin.latitude};
   m.gps_longitude = {m.origin.longitude};
   fill_local_gps(m, "m");
@@ -174,15 +168,16 @@ TEST(Geodesy, DepthScaleMarginHoldsTheDepthEffect) {
   EXPECT_LE(m.depth_scale_margin, 1.02 * (floor + 0.001) / kRadius);
   // The frame's margin holds the scale measured at the zone's edge.
   const LocalFrame frame(m.origin);
-  const GeoOrigin edge = destination(m.origin, 30.0, kZone - 10.0), step = destination(edge, 30.0, 10.0);
+  const GeoOrigin edge = test::geodesic_destination(m.origin, 30.0, kZone - 10.0),
+                  step = test::geodesic_destination(edge, 30.0, 10.0);
   EXPECT_GE(m.frame_scale_margin, 1.0 - frame_distance(frame, edge, step) / surface_distance(edge, step));
 }
 
 TEST(Geodesy, GpsBoxesAreWidenedAndHoldTheFixes) {
   Mission m;
-  m.origin = kOrigins[0];
+  m.origin = test::kFrameOrigins[0];
   m.gps_time = {0.0, 1.0};
-  const GeoOrigin far = destination(m.origin, 40.0, 3000.0);
+  const GeoOrigin far = test::geodesic_destination(m.origin, 40.0, 3000.0);
   m.gps_latitude = {m.origin.latitude, far.latitude};
   m.gps_longitude = {m.origin.longitude, far.longitude};
   fill_local_gps(m, "m");
@@ -210,18 +205,18 @@ TEST(Geodesy, GpsBoxesAreWidenedAndHoldTheFixes) {
 }
 
 TEST(Geodesy, MeridianConvergenceOverTheMissionAreaIsInsideTheHeadingMargin) {
-  for (const GeoOrigin& origin : kOrigins) {
+  for (const GeoOrigin& origin : test::kFrameOrigins) {
     Mission m;
     m.origin = origin;
     m.gps_time = {0.0, 1.0};
-    const GeoOrigin far = destination(origin, 60.0, 4000.0);
+    const GeoOrigin far = test::geodesic_destination(origin, 60.0, 4000.0);
     m.gps_latitude = {origin.latitude, far.latitude};
     m.gps_longitude = {origin.longitude, far.longitude};
     fill_local_gps(m, "m");
     double worst = 0.0;
     // Points at the edge of the frame's zone, where the margin must hold.
     for (double azimuth = 0.0; azimuth < 360.0; azimuth += 10.0)
-      worst = std::max(worst, true_convergence(origin, destination(origin, azimuth, kZone)));
+      worst = std::max(worst, true_convergence(origin, test::geodesic_destination(origin, azimuth, kZone)));
     EXPECT_LE(worst, m.heading_frame_margin) << origin.latitude;
     if (origin.latitude != 0.0) {
       EXPECT_GT(worst, 0.9 * m.heading_frame_margin) << origin.latitude;

@@ -23,11 +23,10 @@
 #include "solver/sim/simulator.h"
 #include "solver/solve/solve_mission.h"
 #include "tests/support/truth_checks.h"
+#include "tests/support/geodetic_sampling.h"
 
 namespace gesmi::io {
 namespace {
-
-const GeoOrigin kOrigins[] = {{48.212920614, -4.458227931}, {0.0, 10.0}, {70.0, 20.0}, {-45.0, 170.0}};
 
 // The signed angle from the local frame's north axis to true north at the frame
 // point (north, east): the frame direction of a 1 m geodesic step north.
@@ -76,7 +75,7 @@ void random_tube(const GeoOrigin& origin, std::mt19937_64& random, std::size_t n
 
 TEST(HeadingFrameGeodesy, MarginsOverATubeHoldTheConvergenceWhereverTheRobotCanBe) {
   std::mt19937_64 random(5);
-  for (const GeoOrigin& origin : kOrigins) {
+  for (const GeoOrigin& origin : test::kFrameOrigins) {
     Mission m;
     TubeDomains tube;
     const std::size_t n = 300;
@@ -136,7 +135,7 @@ TEST(HeadingFrameGeodesy, MarginsOverATubeHoldTheConvergenceWhereverTheRobotCanB
 TEST(HeadingFrameGeodesy, MarginsNarrowedAtSomeSamplesAreTheTubesThereAndTheZonesElsewhere) {
   std::mt19937_64 random(8);
   std::bernoulli_distribution pick(0.5);
-  for (const GeoOrigin& origin : kOrigins) {
+  for (const GeoOrigin& origin : test::kFrameOrigins) {
     for (const std::size_t n : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{300}}) {
       Mission m;
       TubeDomains tube;

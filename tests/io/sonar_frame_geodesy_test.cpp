@@ -19,6 +19,7 @@
 #include "solver/mission/frame_scale.h"
 #include "solver/mission/meridian_convergence.h"
 #include "solver/network/sonar_plane.h"
+#include "tests/support/geodetic_sampling.h"
 
 namespace gesmi::io {
 namespace {
@@ -82,11 +83,9 @@ bool keeps_truth(Scene s, double slack) {
   return true;
 }
 
-const GeoOrigin kOrigins[] = {{48.212920614, -4.458227931}, {0.0, 10.0}, {70.0, 20.0}, {-45.0, 170.0}};
-
 TEST(SonarFrameGeodesy, TheSlackKeepsTheTruthAnywhereInTheZone) {
   int lost_without = 0, radial = 0;
-  for (const GeoOrigin& origin : kOrigins)
+  for (const GeoOrigin& origin : test::kFrameOrigins)
     for (const double distance : {100.0, 5000.0, 50000.0, 90000.0})
       for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0)
         for (const double turn : {0.0, 90.0, 180.0, 270.0}) {
@@ -112,7 +111,7 @@ TEST(SonarFrameGeodesy, TheSlackKeepsTheTruthAnywhereInTheZone) {
 
 TEST(SonarFrameGeodesy, ThePreFilterAllowsTheTrueRange) {
   int excluded_without = 0, radial = 0;
-  for (const GeoOrigin& origin : kOrigins)
+  for (const GeoOrigin& origin : test::kFrameOrigins)
     for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0)
       for (const double turn : {0.0, 90.0, 180.0, 270.0}) {
         Scene s = scene(origin, azimuth, 90000.0, azimuth + turn);

@@ -24,7 +24,7 @@
 namespace gesmi {
 namespace {
 
-constexpr std::uint64_t kSeed = 0x65756c6572ULL;  // "euler"
+constexpr std::uint64_t kEulerSeed = 0x65756c6572ULL;  // "euler"
 
 using Mpfr = oracle::MpfrNumber;
 
@@ -41,13 +41,7 @@ Interval exact_at(double x, bool cosine) {
   return Interval(y.down(), y.up());
 }
 
-std::string hex(double x) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%a", x);
-  return b;
-}
-
-struct Tally {
+struct EulerTally {
   int intervals = 0, points = 0, extrema = 0, failures = 0;
   double worst_excess = 0.0;  // enclosure width minus exact range width, over r^2
   std::string worst_input;
@@ -56,7 +50,7 @@ struct Tally {
 
 // The exact values at the real multiples of k pi / 2 inside X: sin and cos are
 // 0 or +-1 there. MPFR decides which multiples lie inside.
-void check_extrema(const Interval& x, const SinCos<Interval>& e, Tally& t) {
+void check_extrema(const Interval& x, const SinCos<Interval>& e, EulerTally& t) {
   Mpfr half_pi, q, kpi;
   mpfr_const_pi(half_pi, MPFR_RNDN);
   mpfr_div_ui(half_pi, half_pi, 2, MPFR_RNDN);
@@ -76,10 +70,11 @@ void check_extrema(const Interval& x, const SinCos<Interval>& e, Tally& t) {
       ++t.extrema;
       if (!e.sin.contains(kSin[k]) || !e.cos.contains(kCos[k])) {
         if (t.failures++ == 0)
-          t.first_failure = "X = [" + hex(x.lo()) + ", " + hex(x.hi()) + "] holds k pi/2 with k mod 4 = " +
-                            std::to_string(k) + ": sin " + std::to_string(kSin[k]) + " cos " + std::to_string(kCos[k]) +
-                            " not in sin [" + hex(e.sin.lo()) + ", " + hex(e.sin.hi()) + "], cos [" + hex(e.cos.lo()) +
-                            ", " + hex(e.cos.hi()) + "]";
+          t.first_failure = "X = [" + oracle::hex(x.lo()) + ", " + oracle::hex(x.hi()) +
+                            "] holds k pi/2 with k mod 4 = " + std::to_string(k) + ": sin " + std::to_string(kSin[k]) +
+                            " cos " + std::to_string(kCos[k]) + " not in sin [" + oracle::hex(e.sin.lo()) + ", " +
+                            oracle::hex(e.sin.hi()) + "], cos [" + oracle::hex(e.cos.lo()) + ", " +
+                            oracle::hex(e.cos.hi()) + "]";
       }
     }
     mpfr_add_ui(q, q, 1, MPFR_RNDN);
@@ -88,7 +83,7 @@ void check_extrema(const Interval& x, const SinCos<Interval>& e, Tally& t) {
 
 // Checks sin_cos(X) at the end points, the midpoint, `random_points` points of X,
 // the doubles next to each multiple of pi/2 inside X, and the real multiples.
-void check_interval(const Interval& x, int random_points, std::mt19937_64& rng, Tally& t) {
+void check_interval(const Interval& x, int random_points, std::mt19937_64& rng, EulerTally& t) {
   const SinCos<Interval> e = sin_cos(x);
   ++t.intervals;
   std::vector<double> points = {x.lo(), x.hi(), x.mid()};
@@ -109,10 +104,11 @@ void check_interval(const Interval& x, int random_points, std::mt19937_64& rng, 
     cos_range = hull(cos_range, c);
     if (!e.sin.is_superset(s) || !e.cos.is_superset(c)) {
       if (t.failures++ == 0)
-        t.first_failure = "X = [" + hex(x.lo()) + ", " + hex(x.hi()) + "] at x = " + hex(p) + ": exact sin [" +
-                          hex(s.lo()) + ", " + hex(s.hi()) + "] cos [" + hex(c.lo()) + ", " + hex(c.hi()) +
-                          "], enclosures sin [" + hex(e.sin.lo()) + ", " + hex(e.sin.hi()) + "] cos [" +
-                          hex(e.cos.lo()) + ", " + hex(e.cos.hi()) + "]";
+        t.first_failure = "X = [" + oracle::hex(x.lo()) + ", " + oracle::hex(x.hi()) + "] at x = " + oracle::hex(p) +
+                          ": exact sin [" + oracle::hex(s.lo()) + ", " + oracle::hex(s.hi()) + "] cos [" +
+                          oracle::hex(c.lo()) + ", " + oracle::hex(c.hi()) + "], enclosures sin [" +
+                          oracle::hex(e.sin.lo()) + ", " + oracle::hex(e.sin.hi()) + "] cos [" +
+                          oracle::hex(e.cos.lo()) + ", " + oracle::hex(e.cos.hi()) + "]";
     }
   }
   check_extrema(x, e, t);
@@ -123,7 +119,7 @@ void check_interval(const Interval& x, int random_points, std::mt19937_64& rng, 
     const double excess = std::max(e.sin.width() - sin_range.width(), e.cos.width() - cos_range.width());
     if (excess / (r * r) > t.worst_excess) {
       t.worst_excess = excess / (r * r);
-      t.worst_input = "[" + hex(x.lo()) + ", " + hex(x.hi()) + "]";
+      t.worst_input = "[" + oracle::hex(x.lo()) + ", " + oracle::hex(x.hi()) + "]";
     }
   }
 }
@@ -145,8 +141,8 @@ double near_extremum(std::mt19937_64& rng) {
 
 TEST(EulerSinCosOracle, EnclosesTheExactSineAndCosineAtEveryPointAndExtremum) {
   const auto start = std::chrono::steady_clock::now();
-  std::mt19937_64 rng(kSeed);
-  Tally t;
+  std::mt19937_64 rng(kEulerSeed);
+  EulerTally t;
   // 1. Centred on an extremum, radius at the Taylor limit 0.05 and just below/above:
   //    the remainder term is then all that keeps the end points inside.
   for (int i = 0; i < 4000; ++i) {
@@ -174,7 +170,7 @@ TEST(EulerSinCosOracle, EnclosesTheExactSineAndCosineAtEveryPointAndExtremum) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("sin_cos: %d intervals, %d points, %d real extrema inside, %d failures; worst excess width over the\n"
               "exact range of the sampled points: %.3f r^2; seed %#llx; %.2f s\n",
-              t.intervals, t.points, t.extrema, t.failures, t.worst_excess, static_cast<unsigned long long>(kSeed),
+              t.intervals, t.points, t.extrema, t.failures, t.worst_excess, static_cast<unsigned long long>(kEulerSeed),
               seconds);
   EXPECT_EQ(t.failures, 0) << t.first_failure;
   EXPECT_GT(t.extrema, 1000);  // the adversarial cases were really generated

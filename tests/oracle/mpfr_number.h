@@ -4,6 +4,9 @@
 
 #include <mpfr.h>
 
+#include <cstdio>
+#include <string>
+
 namespace gesmi::oracle {
 
 inline constexpr mpfr_prec_t kPrecision = 128;  // far beyond double: the oracle's own error is negligible
@@ -21,5 +24,12 @@ class MpfrNumber {
  private:
   mpfr_t x_;
 };
+
+/// x in C's hexadecimal notation (exact), for the failure messages.
+inline std::string hex(double x) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%a", x);
+  return text;
+}
 
 }  // namespace gesmi::oracle

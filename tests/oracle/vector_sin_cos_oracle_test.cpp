@@ -23,18 +23,12 @@
 namespace gesmi {
 namespace {
 
-constexpr std::uint64_t kSeed = 0x6c69626d766563ULL;  // "libmvec"
+constexpr std::uint64_t kLibmvecSeed = 0x6c69626d766563ULL;  // "libmvec"
 
 using Mpfr = oracle::MpfrNumber;
 
-std::string hex(double x) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%a", x);
-  return b;
-}
-
 std::vector<double> angles() {
-  std::mt19937_64 rng(kSeed);
+  std::mt19937_64 rng(kLibmvecSeed);
   std::uniform_real_distribution<double> attitude(-4.0 * M_PI, 4.0 * M_PI), unit(0.0, 1.0);
   std::vector<double> x;
   for (int i = 0; i < 60000; ++i) x.push_back(attitude(rng));
@@ -57,14 +51,14 @@ std::vector<double> angles() {
   return x;
 }
 
-struct Tally {
+struct VectorTally {
   int values = 0, failures = 0;
   double worst_ulps = 0.0;  // the largest error seen, in ulps of the result
   std::string first_failure, worst_at;
 };
 
 // y against the exact function of x: within the margin, and the error in ulps.
-void check(double x, double y, bool cosine, const char* path, Tally& t) {
+void check(double x, double y, bool cosine, const char* path, VectorTally& t) {
   Mpfr exact, error, margin, mx;
   mpfr_set_d(mx, x, MPFR_RNDN);  // exact
   if (cosine)
@@ -82,11 +76,11 @@ void check(double x, double y, bool cosine, const char* path, Tally& t) {
   const double ulps = mpfr_get_d(error, MPFR_RNDU) / ulp;
   if (ulps > t.worst_ulps) {
     t.worst_ulps = ulps;
-    t.worst_at = std::string(cosine ? "cos " : "sin ") + hex(x);
+    t.worst_at = std::string(cosine ? "cos " : "sin ") + oracle::hex(x);
   }
   if (mpfr_cmp(error, margin) > 0 && t.failures++ == 0)
-    t.first_failure = std::string(cosine ? "cos(" : "sin(") + hex(x) + ") = " + hex(y) + " (" + path + "), " +
-                      std::to_string(ulps) + " ulps from the exact value";
+    t.first_failure = std::string(cosine ? "cos(" : "sin(") + oracle::hex(x) + ") = " + oracle::hex(y) + " (" + path +
+                      "), " + std::to_string(ulps) + " ulps from the exact value";
 }
 
 TEST(VectorSinCosOracle, EveryValueIsWithinItsMarginOfTheExactOne) {
@@ -94,7 +88,7 @@ TEST(VectorSinCosOracle, EveryValueIsWithinItsMarginOfTheExactOne) {
   const std::size_t n = x.size();
   std::vector<double> sine(n), cosine(n);
   sin_cos_many(x.data(), n, sine.data(), cosine.data());
-  Tally t;
+  VectorTally t;
   for (std::size_t i = 0; i < n; ++i) {
     check(x[i], sine[i], false, "one call", t);
     check(x[i], cosine[i], true, "one call", t);
@@ -109,7 +103,7 @@ TEST(VectorSinCosOracle, EveryValueIsWithinItsMarginOfTheExactOne) {
     }
   }
   std::printf("sin_cos_many: %d values, %d outside the margin; the largest error %.3f ulps (%s); seed %#llx\n", t.values,
-              t.failures, t.worst_ulps, t.worst_at.c_str(), static_cast<unsigned long long>(kSeed));
+              t.failures, t.worst_ulps, t.worst_at.c_str(), static_cast<unsigned long long>(kLibmvecSeed));
   EXPECT_EQ(t.failures, 0) << t.first_failure;
   EXPECT_GT(t.values, 300000);
 }

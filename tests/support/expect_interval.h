@@ -3,11 +3,20 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <numbers>
 #include <string>
 
 #include "solver/interval/interval.h"
 
 namespace gesmi::test {
+
+/// The largest finite double, and pi to long double precision, for expected bounds.
+inline constexpr double kMax = std::numeric_limits<double>::max();
+inline constexpr long double kPiLong = std::numbers::pi_v<long double>;
+
+/// Whether x holds a value computed in long double (compared exactly, not rounded to double).
+inline bool holds(const Interval& x, long double value) { return x.lo() <= value && value <= x.hi(); }
 
 std::string to_string(const Interval& x);
 

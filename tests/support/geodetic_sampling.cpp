@@ -5,7 +5,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include <GeographicLib/Geodesic.hpp>
+
 namespace gesmi::test {
+
+GeoOrigin geodesic_destination(const GeoOrigin& from, double azimuth_deg, double distance) {
+  GeoOrigin to{};
+  GeographicLib::Geodesic::WGS84().Direct(from.latitude, from.longitude, azimuth_deg, distance, to.latitude,
+                                          to.longitude);
+  return to;
+}
 
 SampledExtremes sample_inside(const io::LocalFrame& frame, const Interval& north, const Interval& east,
                               const io::GeodeticBox& bounds, int edge, int grid) {

@@ -7,6 +7,15 @@
 
 namespace gesmi::test {
 
+/// Frame origins of the geodesy tests: the reference mission's, the equator, 70 N, and
+/// 45 S by the antimeridian.
+inline constexpr GeoOrigin kFrameOrigins[] = {
+    {48.212920614, -4.458227931}, {0.0, 10.0}, {70.0, 20.0}, {-45.0, 170.0}};
+
+/// The end of the WGS84 geodesic (GeographicLib) from `from`, at an azimuth in degrees,
+/// `distance` metres long.
+GeoOrigin geodesic_destination(const GeoOrigin& from, double azimuth_deg, double distance);
+
 /// The extremes of the sampled latitudes and longitudes (degrees).
 struct SampledExtremes {
   double lat_lo, lat_hi, lon_lo, lon_hi;

@@ -73,6 +73,13 @@ CommandResult run_program(const std::string& program, const std::vector<std::str
   return result;
 }
 
+std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 int line_count(const std::string& s) {
   int lines = 0;
   for (const char c : s) lines += (c == '\n');

@@ -25,6 +25,9 @@ std::string temp_folder(const std::string& tag);
 /// The names of the entries of a folder (what a command left there).
 std::set<std::string> names_in(const std::string& folder);
 
+/// The whole content of a file (empty when it cannot be read).
+std::string file_text(const std::string& path);
+
 /// Number of lines of s (a final line without newline counts).
 int line_count(const std::string& s);
 

@@ -16,16 +16,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The words of import-command.txt, with the folder's file names made absolute.
 std::vector<std::string> import_command(const std::string& folder, const std::string& output) {
-  std::istringstream words(read_file(folder + "/import-command.txt"));
+  std::istringstream words(file_text(folder + "/import-command.txt"));
   std::string word;
   words >> word;
   EXPECT_EQ(word, "gesmi");
@@ -50,7 +43,7 @@ TEST(CmdExport, ImportCommandRebuildsTheMissionAndTheExportIsIdentical) {
   ASSERT_EQ(imported.exit_code, 0) << imported.err;
   ASSERT_EQ(run_gesmi({"export", folder + "/back.h5", "-o", folder + "/csv2"}).exit_code, 0);
   for (const char* file : {"nav.csv", "gps.csv", "marks.csv", "truth.csv", "truth_mines.csv", "model.yaml", "import-command.txt"})
-    EXPECT_EQ(read_file(folder + "/csv/" + file), read_file(folder + "/csv2/" + file)) << file;
+    EXPECT_EQ(file_text(folder + "/csv/" + file), file_text(folder + "/csv2/" + file)) << file;
 
   // Same mission for the solver: identical navigation, fixes and marks.
   const Mission a = io::read_mission(original), b = io::read_mission(folder + "/back.h5");

@@ -42,13 +42,6 @@ TEST(LocalizeCommand, JsonNamesTheOutlierSetsAndTheSafetyOfEachDatum) {
   }
 }
 
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // OUT/summary.json and the printed summary name data by their place in the scenario
 // file (from 1): the injected bearing outliers 3 and 8 (from 0, all data bearings)
 // are data 4 and 9.
@@ -57,11 +50,11 @@ TEST(LocalizeCommand, SummaryJsonAndTextNameTheOutlierSetsInFileNumbers) {
   const std::string out = temp_folder("localize_summary") + "/w";
   const CommandResult r = run_gesmi({"localize", scenario, "-o", out, "--safety"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(read(out + "/summary.txt"), r.out);
+  EXPECT_EQ(file_text(out + "/summary.txt"), r.out);
   EXPECT_NE(r.out.find("outliers: #4:laser #9:laser  (the only outlier set, proved)"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("undetermined"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("safety of each datum"), std::string::npos) << r.out;
-  const nlohmann::json s = nlohmann::json::parse(read(out + "/summary.json"));
+  const nlohmann::json s = nlohmann::json::parse(file_text(out + "/summary.json"));
   EXPECT_EQ(s["scenario"], "warehouse_p04_outliers");
   ASSERT_EQ(s["hypotheses"].size(), 1u);
   const nlohmann::json& h = s["hypotheses"][0];
@@ -79,7 +72,7 @@ TEST(LocalizeCommand, SummaryJsonAndTextNameTheOutlierSetsInFileNumbers) {
 // agree on and the sets, not a single "outliers" line.
 TEST(LocalizeCommand, SummaryListsTheSetsOfAnUndeterminedHypothesis) {
   const std::string dir = temp_folder("localize_q1");
-  std::string text = read(source_dir() + "/missions/localization/triangle_two_hypotheses.yaml");
+  std::string text = file_text(source_dir() + "/missions/localization/triangle_two_hypotheses.yaml");
   text.replace(text.find("count: 0"), 8, "count: 1");
   text.replace(text.find("epsilon: 0.01"), 13, "epsilon: 0.04");  // fast; the sets stay apart
   std::ofstream(dir + "/t.yaml") << text;
@@ -88,7 +81,7 @@ TEST(LocalizeCommand, SummaryListsTheSetsOfAnUndeterminedHypothesis) {
   // At q = 1, the empty set and single outliers may both hold near the true pose.
   EXPECT_NE(r.out.find("agreed outliers: none\n     outlier sets: {}"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("possible sets"), std::string::npos) << r.out;
-  const nlohmann::json s = nlohmann::json::parse(read(dir + "/out/summary.json"));
+  const nlohmann::json s = nlohmann::json::parse(file_text(dir + "/out/summary.json"));
   bool several = false;
   for (const nlohmann::json& h : s["hypotheses"]) several = several || h["outlier_sets"].size() > 1;
   EXPECT_TRUE(several);
@@ -97,7 +90,7 @@ TEST(LocalizeCommand, SummaryListsTheSetsOfAnUndeterminedHypothesis) {
 // A search stopped by a limit says which limits it had and where to raise them.
 TEST(LocalizeCommand, ALimitHitNamesTheLimitsAndHowToRaiseThem) {
   const std::string dir = temp_folder("localize_limit");
-  std::string scenario = read(source_dir() + "/missions/localization/seed000_symmetric.yaml");
+  std::string scenario = file_text(source_dir() + "/missions/localization/seed000_symmetric.yaml");
   const std::string solver = "solver:\n  epsilon: 0.02\n";
   ASSERT_NE(scenario.find(solver), std::string::npos);
   scenario.replace(scenario.find(solver), solver.size(), "solver:\n  epsilon: 1e-12\n  max_boxes: 2000\n");

@@ -18,13 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 
 void put(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 void expect_skipped(const std::vector<std::string>& args, const std::vector<std::string>& outputs) {
   for (const std::string& o : outputs) put(o, "placeholder");
   std::vector<std::string> with = args;
@@ -32,7 +25,7 @@ void expect_skipped(const std::vector<std::string>& args, const std::vector<std:
   const CommandResult r = run_gesmi(with);
   EXPECT_EQ(r.exit_code, 0) << args[0] << ": " << r.err;
   EXPECT_NE(r.out.find("skipped (--skip-existing)"), std::string::npos) << args[0] << ": " << r.out;
-  for (const std::string& o : outputs) EXPECT_EQ(read(o), "placeholder") << o;
+  for (const std::string& o : outputs) EXPECT_EQ(file_text(o), "placeholder") << o;
 }
 
 TEST(SkipExisting, EveryWritingCommandSkipsWhenItsOutputsExist) {
@@ -111,7 +104,7 @@ TEST(SkipExisting, AMissingOutputIsWritten) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out.find("skipped"), std::string::npos) << r.out;
   EXPECT_TRUE(fs::exists(d + "/r.envelope.png"));
-  EXPECT_NE(read(d + "/r.h5"), "placeholder");
+  EXPECT_NE(file_text(d + "/r.h5"), "placeholder");
 }
 
 }  // namespace

@@ -65,7 +65,8 @@ int run_candidates(std::span<const std::string> args) {
   return kExitOk;
 }
 
-const bool registered = register_command({"candidates", "list where a missed mine could be on the sonar record", run_candidates});
+const bool candidates_registered =
+    register_command({"candidates", "list where a missed mine could be on the sonar record", run_candidates});
 
 }  // namespace
 }  // namespace gesmi::cli

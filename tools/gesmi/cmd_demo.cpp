@@ -94,7 +94,8 @@ int run_demo(std::span<const std::string> args) {
   return solved;
 }
 
-const bool registered = register_command({"demo", "simulate, solve and draw the reference-like mission", run_demo});
+const bool demo_registered =
+    register_command({"demo", "simulate, solve and draw the reference-like mission", run_demo});
 
 }  // namespace
 }  // namespace gesmi::cli

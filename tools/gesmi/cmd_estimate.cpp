@@ -20,7 +20,7 @@ namespace {
 
 namespace po = boost::program_options;
 
-constexpr const char* kUsage = "gesmi estimate SCENARIO.yaml -o OUT_DIR [--quiet] [--skip-existing]";
+constexpr const char* kEstimateUsage = "gesmi estimate SCENARIO.yaml -o OUT_DIR [--quiet] [--skip-existing]";
 
 int run_estimate(std::span<const std::string> args) {
   po::options_description options("estimate options");
@@ -33,9 +33,9 @@ int run_estimate(std::span<const std::string> args) {
   po::positional_options_description positional;
   positional.add("scenario", 1);
   po::variables_map values;
-  if (!parse_options(args, options, positional, values, kUsage)) return kExitOk;
-  if (!values.count("scenario")) throw UsageError(std::string("missing SCENARIO.yaml; usage: ") + kUsage);
-  if (!values.count("output")) throw UsageError(std::string("missing -o OUT_DIR; usage: ") + kUsage);
+  if (!parse_options(args, options, positional, values, kEstimateUsage)) return kExitOk;
+  if (!values.count("scenario")) throw UsageError(std::string("missing SCENARIO.yaml; usage: ") + kEstimateUsage);
+  if (!values.count("output")) throw UsageError(std::string("missing -o OUT_DIR; usage: ") + kEstimateUsage);
   const EstimationProblem problem = io::read_estimation_scenario(values["scenario"].as<std::string>());
   const std::string folder = values["output"].as<std::string>();
   io::OutputSet outputs(input_files(values, {"scenario"}));
@@ -64,7 +64,7 @@ int run_estimate(std::span<const std::string> args) {
   return kExitOk;
 }
 
-const bool registered = register_command(
+const bool estimate_registered = register_command(
     {"estimate", "parameter estimation with outliers by set inversion (seed 004, Example 2)", run_estimate});
 
 }  // namespace

@@ -77,7 +77,8 @@ int run_example(std::span<const std::string> args) {
   return report.finish(kExitOk);
 }
 
-const bool registered = register_command({"example", "run a built-in example: paper2d (seed 001, section II-B)", run_example});
+const bool example_registered =
+    register_command({"example", "run a built-in example: paper2d (seed 001, section II-B)", run_example});
 
 }  // namespace
 }  // namespace gesmi::cli

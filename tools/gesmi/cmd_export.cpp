@@ -196,7 +196,8 @@ int run_export(std::span<const std::string> args) {
   return kExitOk;
 }
 
-const bool registered = register_command({"export", "write a mission as CSV files (or a GESMI text log)", run_export});
+const bool export_registered =
+    register_command({"export", "write a mission as CSV files (or a GESMI text log)", run_export});
 
 }  // namespace
 }  // namespace gesmi::cli

@@ -233,7 +233,8 @@ int run_import(std::span<const std::string> args) {
   throw UsageError("unknown kind " + io::quoted_input(kind) + ": expected marks, nav or gesmi-txt");
 }
 
-const bool registered = register_command({"import", "make or update a mission from CSV or GESMI text files", run_import});
+const bool import_registered =
+    register_command({"import", "make or update a mission from CSV or GESMI text files", run_import});
 
 }  // namespace
 }  // namespace gesmi::cli

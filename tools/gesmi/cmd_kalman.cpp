@@ -187,7 +187,8 @@ int run_kalman(std::span<const std::string> args) {
   return report.finish(kExitOk);
 }
 
-const bool registered = register_command({"kalman", "Kalman smoother baseline (EKF + RTS) on a mission", run_kalman});
+const bool kalman_registered =
+    register_command({"kalman", "Kalman smoother baseline (EKF + RTS) on a mission", run_kalman});
 
 }  // namespace
 }  // namespace gesmi::cli

@@ -27,7 +27,7 @@ namespace {
 
 namespace po = boost::program_options;
 
-constexpr const char* kUsage =
+constexpr const char* kLocalizeUsage =
     "gesmi localize SCENARIO.yaml -o OUT_DIR [--safety] [--quiet] [--skip-existing]\n"
     "       gesmi localize SCENARIO.yaml --simulate [--seed N] [--error-fraction F] [--range-outliers I,J]\n"
     "                      [--bearing-outliers I,J]";
@@ -87,14 +87,14 @@ int run_localize(std::span<const std::string> args) {
   po::positional_options_description positional;
   positional.add("scenario", 1);
   po::variables_map values;
-  if (!parse_options(args, options, positional, values, kUsage)) return kExitOk;
-  if (!values.count("scenario")) throw UsageError(std::string("missing SCENARIO.yaml; usage: ") + kUsage);
+  if (!parse_options(args, options, positional, values, kLocalizeUsage)) return kExitOk;
+  if (!values.count("scenario")) throw UsageError(std::string("missing SCENARIO.yaml; usage: ") + kLocalizeUsage);
   const LocalizationProblem problem = io::read_localization_scenario(values["scenario"].as<std::string>());
   if (values.count("simulate")) {
     if (values.count("json")) throw UsageError("--json: --simulate prints measurements as YAML, not a report");
     return simulate(problem, values);
   }
-  if (!values.count("output")) throw UsageError(std::string("missing -o OUT_DIR; usage: ") + kUsage);
+  if (!values.count("output")) throw UsageError(std::string("missing -o OUT_DIR; usage: ") + kLocalizeUsage);
   const std::string folder = values["output"].as<std::string>();
   io::OutputSet outputs(input_files(values, {"scenario"}));
   io::OutputSet::check_folder(folder);  // before the search, which can be long
@@ -127,7 +127,7 @@ int run_localize(std::span<const std::string> args) {
   return exit_code;
 }
 
-const bool registered = register_command(
+const bool localize_registered = register_command(
     {"localize", "static localization by set inversion (SIVIA, GOMNE) from range and bearing data", run_localize});
 
 }  // namespace

@@ -158,7 +158,7 @@ int run_marks(std::span<const std::string> args) {
   throw UsageError("unknown action " + io::quoted_input(action) + ": expected list, add or remove");
 }
 
-const bool registered = register_command({"marks", "list, add or remove operator marks", run_marks});
+const bool marks_registered = register_command({"marks", "list, add or remove operator marks", run_marks});
 
 }  // namespace
 }  // namespace gesmi::cli

@@ -22,7 +22,7 @@ namespace {
 
 namespace po = boost::program_options;
 
-constexpr const char* kUsage =
+constexpr const char* kSimulateUsage =
     "gesmi simulate --preset redermor --seed S -o MISSION.h5 [--errors uniform|worst-case|at-samples|drifting|corners|"
     "bias-noise [--bias-share F] [--drift none|ramp|flip]] "
     "[--duration T] [--rate HZ] [--mines K] [--missed P] [--unassociated P] [--outliers N] [--surface S [--wave-height H] "
@@ -62,7 +62,7 @@ int run_simulate(std::span<const std::string> args) {
   add_json_option(options);
   add_skip_existing(options);
   po::variables_map v;
-  if (!parse_options(args, options, {}, v, kUsage)) return kExitOk;
+  if (!parse_options(args, options, {}, v, kSimulateUsage)) return kExitOk;
   if (v["preset"].as<std::string>() != "redermor")
     throw UsageError("--preset: unknown preset " + io::quoted_input(v["preset"].as<std::string>()) + " (available: redermor)");
   SimulationOptions o;
@@ -130,7 +130,8 @@ int run_simulate(std::span<const std::string> args) {
   return report.finish(kExitOk);
 }
 
-const bool registered = register_command({"simulate", "simulate a reference-like mission with ground truth", run_simulate});
+const bool simulate_registered =
+    register_command({"simulate", "simulate a reference-like mission with ground truth", run_simulate});
 
 }  // namespace
 }  // namespace gesmi::cli

@@ -108,7 +108,8 @@ int run_solve(std::span<const std::string> args) {
   return report.finish(s.report.consistent ? kExitOk : kExitInconsistent);
 }
 
-const bool registered = register_command({"solve", "interval solve of a mission: tube, mine boxes, waterfall", run_solve});
+const bool solve_registered =
+    register_command({"solve", "interval solve of a mission: tube, mine boxes, waterfall", run_solve});
 
 }  // namespace
 }  // namespace gesmi::cli

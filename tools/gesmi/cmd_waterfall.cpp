@@ -68,7 +68,8 @@ int run_waterfall(std::span<const std::string> args) {
   return kExitOk;
 }
 
-const bool registered = register_command({"waterfall", "draw the reconstructed waterfall of a result", run_waterfall});
+const bool waterfall_registered =
+    register_command({"waterfall", "draw the reconstructed waterfall of a result", run_waterfall});
 
 }  // namespace
 }  // namespace gesmi::cli

@@ -10,11 +10,11 @@
 #include "solver/setinv/localization/range_contractor.h"
 #include "solver/setinv/outliers/hypotheses.h"
 #include "solver/setinv/outliers/outlier_refinement.h"
+#include "solver/model/angles.h"
 
 namespace gesmi {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 /// Remark 4's test for a x + b y <= c on the position of a box.
 struct HalfPlanes {

@@ -26,14 +26,14 @@ std::string row(double t, const std::string& x_and_y = "nan nan nan nan", const 
   return s.str();
 }
 
-GesmiTextLog read(const std::string& text) {
+GesmiTextLog read_log(const std::string& text) {
   std::istringstream in(text);
   return read_gesmi_txt(in, "log.txt");
 }
 
-std::string error_of(const std::string& text) {
+std::string log_error(const std::string& text) {
   try {
-    read(text);
+    read_log(text);
   } catch (const FormatError& e) {
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
     return e.what();
@@ -43,8 +43,8 @@ std::string error_of(const std::string& text) {
 }
 
 TEST(GesmiTxt, SkipsHeaderLinesAndReadsValueHalfWidthPairs) {
-  const GesmiTextLog log = read("Redermor mission, GESMA\nt phi dphi theta ...\n1 2 3\n\n" + row(0.0, "0.06 1 0 1") +
-                                row(0.1) + "\n");
+  const GesmiTextLog log =
+      read_log("Redermor mission, GESMA\nt phi dphi theta ...\n1 2 3\n\n" + row(0.0, "0.06 1 0 1") + row(0.1) + "\n");
   ASSERT_EQ(log.time.size(), 2u);
   EXPECT_EQ(log.line, (std::vector<std::size_t>{5, 6}));
   EXPECT_EQ(log.value[GesmiColumn::heading][0], 0.5);
@@ -72,7 +72,7 @@ TEST(GesmiTxt, NamesLineFieldAndReasonOfEveryBadRow) {
       {"0 inf 0.001 0.02 0.001 0.5 0.01 1.5 0.02 0 0.02 0 0.02 6 2 12 0.2 nan nan nan nan\n" + row(0.1), "log.txt:1: roll: is infinite"},
   };
   for (const auto& c : cases) {
-    const std::string what = error_of(c.text);
+    const std::string what = log_error(c.text);
     EXPECT_NE(what.find(c.message), std::string::npos) << "got: " << what << "\nwanted: " << c.message;
   }
 }
@@ -80,7 +80,7 @@ TEST(GesmiTxt, NamesLineFieldAndReasonOfEveryBadRow) {
 TEST(GesmiTxt, GivenHalfWidthsReplaceTheModelAndMissingOnesKeepIt) {
   // Heading half-width given on the first row only: the second keeps the model's.
   const SensorModel model;
-  Mission m = mission_from_gesmi_txt(read(row(0.0) + row(0.1, "nan nan nan nan", "inf")), "log.txt",
+  Mission m = mission_from_gesmi_txt(read_log(row(0.0) + row(0.1, "nan nan nan nan", "inf")), "log.txt",
                                      kRedermorStartFix, model, GesmiXy::fixes);
   EXPECT_EQ(m.half_widths.heading, (std::vector<double>{0.01, model.heading}));
   EXPECT_EQ(m.half_widths.depth, (std::vector<double>{2.0, 2.0}));
@@ -88,14 +88,14 @@ TEST(GesmiTxt, GivenHalfWidthsReplaceTheModelAndMissingOnesKeepIt) {
   EXPECT_EQ(m.altitude, (std::vector<double>{12.0, 12.0}));
   EXPECT_TRUE(m.gps_time.empty());
   // With no half-width at all for a sensor, the mission keeps the model (no array).
-  m = mission_from_gesmi_txt(read(row(0.0, "nan nan nan nan", "nan") + row(0.1, "nan nan nan nan", "nan")), "log.txt",
-                             kRedermorStartFix, model, GesmiXy::fixes);
+  m = mission_from_gesmi_txt(read_log(row(0.0, "nan nan nan nan", "nan") + row(0.1, "nan nan nan nan", "nan")),
+                             "log.txt", kRedermorStartFix, model, GesmiXy::fixes);
   EXPECT_TRUE(m.half_widths.heading.empty());
 }
 
 TEST(GesmiTxt, RowsWithXYHalfWidthsBecomeFixesNorthEastAboutTheOrigin) {
   const GeoOrigin origin{48.2, -4.4};
-  Mission m = mission_from_gesmi_txt(read(row(0.0, "100 3 -50 4") + row(0.1) + row(0.2, "120 1 -40 2")), "log.txt",
+  Mission m = mission_from_gesmi_txt(read_log(row(0.0, "100 3 -50 4") + row(0.1) + row(0.2, "120 1 -40 2")), "log.txt",
                                      origin, SensorModel{}, GesmiXy::fixes);
   ASSERT_EQ(m.gps_time, (std::vector<double>{0.0, 0.2}));
   EXPECT_EQ(m.gps_given_north_halfwidth, (std::vector<double>{3.0, 1.0}));
@@ -114,21 +114,21 @@ TEST(GesmiTxt, RowsWithXYHalfWidthsBecomeFixesNorthEastAboutTheOrigin) {
 
 TEST(GesmiTxt, RowsWhoseXYBoundIsUnknownAreNotFixes) {
   // Logs write "unknown" as a huge bound (1e9): such a row says nothing about x, y.
-  Mission m = mission_from_gesmi_txt(read(row(0.0, "100 3 -50 4") + row(0.1, "0 1e9 0 1e9") + row(0.2, "0 200000 0 3") +
-                                          row(0.3, "120 1 -40 2")),
-                                     "log.txt", GeoOrigin{48.2, -4.4}, SensorModel{}, GesmiXy::fixes);
+  Mission m = mission_from_gesmi_txt(
+      read_log(row(0.0, "100 3 -50 4") + row(0.1, "0 1e9 0 1e9") + row(0.2, "0 200000 0 3") + row(0.3, "120 1 -40 2")),
+      "log.txt", GeoOrigin{48.2, -4.4}, SensorModel{}, GesmiXy::fixes);
   EXPECT_EQ(m.gps_time, (std::vector<double>{0.0, 0.3}));
 }
 
 TEST(GesmiTxt, TruthReadingTakesXYAndDepthAsTheTrajectoryLikeCodac) {
-  Mission m = mission_from_gesmi_txt(read(row(0.0, "0.06 0 0 0") + row(0.1, "0.2 inf 0.1 inf")), "log.txt",
+  Mission m = mission_from_gesmi_txt(read_log(row(0.0, "0.06 0 0 0") + row(0.1, "0.2 inf 0.1 inf")), "log.txt",
                                      kRedermorStartFix, SensorModel{}, GesmiXy::truth);
   EXPECT_EQ(m.truth_x, (std::vector<double>{0.06, 0.2}));
   EXPECT_EQ(m.truth_y, (std::vector<double>{0.0, 0.1}));
   EXPECT_EQ(m.truth_z, m.depth);
   ASSERT_EQ(m.gps_time.size(), 1u);  // the start position
   try {
-    mission_from_gesmi_txt(read(row(0.0, "0.06 0 0 0") + row(0.1)), "log.txt", kRedermorStartFix, SensorModel{},
+    mission_from_gesmi_txt(read_log(row(0.0, "0.06 0 0 0") + row(0.1)), "log.txt", kRedermorStartFix, SensorModel{},
                            GesmiXy::truth);
     ADD_FAILURE() << "accepted a row without x";
   } catch (const FormatError& e) {
@@ -138,7 +138,7 @@ TEST(GesmiTxt, TruthReadingTakesXYAndDepthAsTheTrajectoryLikeCodac) {
 
 TEST(GesmiTxt, RefusesFixesBeyondTheLocalFrameZone) {
   try {
-    mission_from_gesmi_txt(read(row(0.0, "0 1 0 1") + row(0.1, "120000 1 0 1")), "log.txt", kRedermorStartFix,
+    mission_from_gesmi_txt(read_log(row(0.0, "0 1 0 1") + row(0.1, "120000 1 0 1")), "log.txt", kRedermorStartFix,
                            SensorModel{}, GesmiXy::fixes);
     ADD_FAILURE() << "accepted";
   } catch (const FormatError& e) {

@@ -38,26 +38,26 @@ const char* kMap =
     "depth:    {column: z}\n";
 
 // The readings, then the grid without GPS fixes (nav_grid.h), as `gesmi import nav` makes them.
-struct Read {
+struct MappedRead {
   NavLog log;
   SensorModel model;
   std::optional<std::int64_t> epoch;
   std::vector<std::string> notes;  // the grid's, then what was filled
 };
 
-Read read(const std::string& csv, const std::string& map_text = kMap, const SensorModel& model = {}) {
+MappedRead read_mapped(const std::string& csv, const std::string& map_text = kMap, const SensorModel& model = {}) {
   std::istringstream in(csv);
   MappedNavLog m =
       read_mapped_nav(in, "log.csv", read_column_map(write_map(map_text), nav_map_schema(), true), model, std::nullopt);
   NavOnGrid on_grid = nav_on_grid(m.series, {}, m.model, m.max_gap, m.limit);
-  Read r{std::move(on_grid.log), m.model, m.epoch, {on_grid.grid_note}};
+  MappedRead r{std::move(on_grid.log), m.model, m.epoch, {on_grid.grid_note}};
   for (const std::string& line : fill_lines(r.log.half_widths)) r.notes.push_back(line);
   return r;
 }
 
-std::string error_of(const std::string& csv, const std::string& map_text = kMap, const SensorModel& model = {}) {
+std::string mapped_error(const std::string& csv, const std::string& map_text = kMap, const SensorModel& model = {}) {
   try {
-    read(csv, map_text, model);
+    read_mapped(csv, map_text, model);
   } catch (const FormatError& e) {
     return e.what();
   }
@@ -66,7 +66,7 @@ std::string error_of(const std::string& csv, const std::string& map_text = kMap,
 
 TEST(MappedNav, AnyOrderExtraColumnsUnitsAndTheDvlGrid) {
   // Semicolons, detected; attitude every row, DVL every other row, depth on two rows.
-  const Read log = read(
+  const MappedRead log = read_mapped(
       "status;z;h;t;u;v;w;alt;p;r;temp\n"
       "ok;10;90;0.0;2;0;0;5;1;-1;12\n"
       "ok;;91;0.1;;;;;1;-1;12\n"
@@ -103,24 +103,26 @@ TEST(MappedNav, AnyConvertedDvlComponentWidensTheDvlBound) {
   map.replace(map.find("{column: u, unit: knots}"), 24, "{column: u}");
   map.replace(map.find("{column: w}"), 11, "{column: w, unit: knots}");
   const std::string csv = "t,r,p,h,u,v,w,alt,z\n0,0,0,0,1,0,3,5,10\n1,0,0,0,1,0,3,5,10\n";
-  const Read log = read(csv, map);
+  const MappedRead log = read_mapped(csv, map);
   EXPECT_GT(log.model.dvl_absolute, SensorModel{}.dvl_absolute);
   std::string si = kMap;
   si.replace(si.find("{column: u, unit: knots}"), 24, "{column: u}");
-  EXPECT_EQ(read(csv, si).model.dvl_absolute, SensorModel{}.dvl_absolute);
+  EXPECT_EQ(read_mapped(csv, si).model.dvl_absolute, SensorModel{}.dvl_absolute);
 }
 
 TEST(MappedNav, DelimitersDeclaredOrDetected) {
   const std::string rows = "0 0 0 0 1 0 0 5 10\n1 0 0 0 1 0 0 5 10\n";
   const std::string map = std::string(kMap) + "delimiter: whitespace\n";
-  EXPECT_EQ(read("t r p h u v w alt z\n" + rows, map).log.time.size(), 2u);
-  EXPECT_EQ(read("t\tr\tp\th\tu\tv\tw\talt\tz\n0\t0\t0\t0\t1\t0\t0\t5\t10\n1\t0\t0\t0\t1\t0\t0\t5\t10\n").log.time.size(), 2u);
-  EXPECT_EQ(read("t,r,p,h,u,v,w,alt,z\n0,0,0,0,1,0,0,5,10\n1,0,0,0,1,0,0,5,10\n").log.time.size(), 2u);
+  EXPECT_EQ(read_mapped("t r p h u v w alt z\n" + rows, map).log.time.size(), 2u);
+  EXPECT_EQ(read_mapped("t\tr\tp\th\tu\tv\tw\talt\tz\n0\t0\t0\t0\t1\t0\t0\t5\t10\n1\t0\t0\t0\t1\t0\t0\t5\t10\n")
+                .log.time.size(),
+            2u);
+  EXPECT_EQ(read_mapped("t,r,p,h,u,v,w,alt,z\n0,0,0,0,1,0,0,5,10\n1,0,0,0,1,0,0,5,10\n").log.time.size(), 2u);
 }
 
 TEST(MappedNav, AbsoluteTimesSetTheEpochAtTheFirstWholeSecond) {
   const std::string map = std::string(kMap).replace(0, std::string(kMap).find('\n'), "time: {column: t, format: iso8601}");
-  const Read log = read(
+  const MappedRead log = read_mapped(
       "t,r,p,h,u,v,w,alt,z\n"
       "2026-05-14T10:00:00.5+02:00,0,0,0,1,0,0,5,10\n"
       "2026-05-14T08:00:01.75Z,0,0,0,1,0,0,5,10\n", map);
@@ -135,36 +137,41 @@ TEST(MappedNav, GapsBeyondTheLimitAndSilentChannelsAreRefused) {
     const bool dvl = k < 40 || k > 75;  // 35 s without DVL
     csv += std::to_string(k) + ",0,0,0," + (dvl ? "1,0,0,5" : ",,,") + "," + (k % 10 == 0 ? "10" : "") + "\n";
   }
-  EXPECT_EQ(read(csv).log.time.size(), 65u);
+  EXPECT_EQ(read_mapped(csv).log.time.size(), 65u);
   SensorModel sample;
   sample.step_model = StepModel::sample;
-  EXPECT_NE(error_of(csv, kMap, sample).find("log.csv:78: vx: a DVL gap of 37 s (from line 41), which the step model 'sample'"),
-            std::string::npos) << error_of(csv, kMap, sample);
-  const std::string gap = error_of(csv, std::string(kMap) + "max_gap: 30\n");
+  EXPECT_NE(mapped_error(csv, kMap, sample)
+                .find("log.csv:78: vx: a DVL gap of 37 s (from line 41), which the step model 'sample'"),
+            std::string::npos)
+      << mapped_error(csv, kMap, sample);
+  const std::string gap = mapped_error(csv, std::string(kMap) + "max_gap: 30\n");
   EXPECT_NE(gap.find("log.csv:78: vx: no reading for 37 s (from 39 s to 76 s), beyond the 30 s limit (max_gap in"), std::string::npos)
       << gap;
   std::string slow_depth = "t,r,p,h,u,v,w,alt,z\n";
   for (int k = 0; k <= 30; ++k) slow_depth += std::to_string(k) + ",0,0,0,1,0,0,5," + (k % 10 == 0 ? "10" : "") + "\n";
-  const std::string depth = error_of(slow_depth, std::string(kMap) + "max_gap: 5\n");
+  const std::string depth = mapped_error(slow_depth, std::string(kMap) + "max_gap: 5\n");
   EXPECT_NE(depth.find("depth: no reading for 10 s"), std::string::npos) << depth;
   std::string silent = "t,r,p,h,u,v,w,alt,z\n0,0,0,0,1,0,0,5,\n1,0,0,0,1,0,0,5,\n";
-  EXPECT_NE(error_of(silent).find("log.csv: depth: no reading in the file (column 'z')"), std::string::npos);
+  EXPECT_NE(mapped_error(silent).find("log.csv: depth: no reading in the file (column 'z')"), std::string::npos);
 }
 
 TEST(MappedNav, RowsAndMapsThatCannotBeReadAreRefusedPrecisely) {
   const std::string header = "t,r,p,h,u,v,w,alt,z\n";
-  EXPECT_NE(error_of(header + "0,0,0,0,1,,0,5,10\n").find("log.csv:2: v: missing: a DVL reading needs vx, vy and vz"),
+  EXPECT_NE(
+      mapped_error(header + "0,0,0,0,1,,0,5,10\n").find("log.csv:2: v: missing: a DVL reading needs vx, vy and vz"),
+      std::string::npos);
+  EXPECT_NE(mapped_error(header + "0,100,0,0,1,0,0,5,10\n1,0,0,0,1,0,0,5,10\n").find("r: 1.7"), std::string::npos);
+  EXPECT_NE(mapped_error(header + "1,0,0,0,1,0,0,5,10\n0,0,0,0,1,0,0,5,10\n").find("log.csv:3: t: goes back in time"),
             std::string::npos);
-  EXPECT_NE(error_of(header + "0,100,0,0,1,0,0,5,10\n1,0,0,0,1,0,0,5,10\n").find("r: 1.7"), std::string::npos);
-  EXPECT_NE(error_of(header + "1,0,0,0,1,0,0,5,10\n0,0,0,0,1,0,0,5,10\n").find("log.csv:3: t: goes back in time"),
+  EXPECT_NE(mapped_error(header + "0,0,0,0,1,0,0,5,10\n0,0,0,0,1,0,0,5,10\n").find("a second DVL reading"),
             std::string::npos);
-  EXPECT_NE(error_of(header + "0,0,0,0,1,0,0,5,10\n0,0,0,0,1,0,0,5,10\n").find("a second DVL reading"), std::string::npos);
-  EXPECT_NE(error_of(header + "0,0,0,0,inf,0,0,5,10\n").find("u: is infinite"), std::string::npos);
-  EXPECT_NE(error_of(header + "0,0,0,0,1,0,0,5,10\n").find("at least 2 rows with a DVL reading"), std::string::npos);
-  const std::string missing = error_of("t,r,p,h,u,v,w,alt\n0,0,0,0,1,0,0,5\n");
+  EXPECT_NE(mapped_error(header + "0,0,0,0,inf,0,0,5,10\n").find("u: is infinite"), std::string::npos);
+  EXPECT_NE(mapped_error(header + "0,0,0,0,1,0,0,5,10\n").find("at least 2 rows with a DVL reading"),
+            std::string::npos);
+  const std::string missing = mapped_error("t,r,p,h,u,v,w,alt\n0,0,0,0,1,0,0,5\n");
   EXPECT_NE(missing.find("log.csv:1: header: no column 'z'"), std::string::npos) << missing;
   EXPECT_NE(missing.find(".yaml:9: depth.column names it"), std::string::npos) << missing;
-  const auto map_error = [&](const std::string& map) { return error_of(header + "0,0,0,0,1,0,0,5,10\n", map); };
+  const auto map_error = [&](const std::string& map) { return mapped_error(header + "0,0,0,0,1,0,0,5,10\n", map); };
   std::string no_unit = kMap;
   no_unit.replace(no_unit.find(", unit: deg}\npitch"), 12, "}");
   EXPECT_NE(map_error(no_unit).find(":2: roll.unit: missing: say rad or deg"), std::string::npos) << map_error(no_unit);

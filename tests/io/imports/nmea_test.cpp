@@ -21,14 +21,14 @@ constexpr const char* kGga = "$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.
 
 using test::timegm_seconds;
 
-NmeaFixes read(const std::string& text, std::optional<std::int64_t> date = std::nullopt) {
+NmeaFixes fixes_of(const std::string& text, std::optional<std::int64_t> date = std::nullopt) {
   std::istringstream in(text);
   return read_nmea(in, "gps.nmea", date);
 }
 
-std::string error_of(const std::string& text, std::optional<std::int64_t> date = std::nullopt) {
+std::string nmea_error(const std::string& text, std::optional<std::int64_t> date = std::nullopt) {
   try {
-    read(text, date);
+    fixes_of(text, date);
   } catch (const FormatError& e) {
     return e.what();
   }
@@ -36,7 +36,7 @@ std::string error_of(const std::string& text, std::optional<std::int64_t> date =
 }
 
 TEST(Nmea, TheTextbookPairGivesItsFix) {
-  const NmeaFixes f = read(std::string(kRmc) + "\r\n" + kGga + "\r\n");
+  const NmeaFixes f = fixes_of(std::string(kRmc) + "\r\n" + kGga + "\r\n");
   ASSERT_EQ(f.time.size(), 1u);
   EXPECT_EQ(f.time[0].seconds, timegm_seconds(1994, 3, 23, 12, 35, 19));
   EXPECT_EQ(f.time[0].fraction, 0.0);
@@ -52,7 +52,8 @@ TEST(Nmea, BadChecksumsAreSkippedAndCounted) {
   gga.back() = '8';  // *48
   std::string altered = kGga;
   altered[10] = '6';  // a digit of the time changed, checksum kept
-  const NmeaFixes f = read(std::string(kRmc) + "\n" + gga + "\n" + altered + "\n" + "$GPGGA,123519,4807.038,N\n" + kGga + "\n");
+  const NmeaFixes f =
+      fixes_of(std::string(kRmc) + "\n" + gga + "\n" + altered + "\n" + "$GPGGA,123519,4807.038,N\n" + kGga + "\n");
   EXPECT_EQ(f.bad_checksum, 3u);
   ASSERT_EQ(f.time.size(), 1u);
   EXPECT_EQ(f.line[0], 5u);
@@ -63,8 +64,8 @@ TEST(Nmea, NoFixQualityOtherSentencesAndSouthWest) {
   const std::string dead_reckoning = nmea_sentence("GPGGA,123520.5,4807.038,N,01131.000,E,6,00,,,M,,M,,");
   const std::string south_west = nmea_sentence("GNGGA,123521.25,3345.5000,S,07030.0000,W,2,10,0.8,1.0,M,0.0,M,,");
   const std::string other = nmea_sentence("GPVTG,054.7,T,034.4,M,005.5,N,010.2,K");
-  const NmeaFixes f =
-      read("\xEF\xBB\xBF" + std::string(kRmc) + "\n" + no_fix + "\n" + dead_reckoning + "\n" + other + "\n" + south_west + "\n");
+  const NmeaFixes f = fixes_of("\xEF\xBB\xBF" + std::string(kRmc) + "\n" + no_fix + "\n" + dead_reckoning + "\n" +
+                               other + "\n" + south_west + "\n");
   EXPECT_EQ(f.no_fix, 2u);
   EXPECT_EQ(f.other, 1u);
   ASSERT_EQ(f.time.size(), 1u);
@@ -79,12 +80,12 @@ TEST(Nmea, DatesCrossMidnightBothWays) {
   const std::string rmc = nmea_sentence("GPRMC,235959,A,4807.038,N,01131.000,E,0.0,0.0,311225,,,A");
   const std::string after = nmea_sentence("GPGGA,000001,4807.038,N,01131.000,E,1,08,0.9,0.0,M,0.0,M,,");
   const std::string before = nmea_sentence("GPGGA,235958,4807.038,N,01131.000,E,1,08,0.9,0.0,M,0.0,M,,");
-  NmeaFixes f = read(before + "\n" + rmc + "\n" + after + "\n");
+  NmeaFixes f = fixes_of(before + "\n" + rmc + "\n" + after + "\n");
   ASSERT_EQ(f.time.size(), 2u);
   EXPECT_EQ(f.time[0].seconds, timegm_seconds(2025, 12, 31, 23, 59, 58));  // dated by the first RMC after it
   EXPECT_EQ(f.time[1].seconds, timegm_seconds(2026, 1, 1, 0, 0, 1));
   // Without RMC, --date dates the first fix and the time of day falling back is midnight.
-  f = read(before + "\n" + after + "\n", timegm_seconds(2025, 12, 31, 0, 0, 0) / 86400);
+  f = fixes_of(before + "\n" + after + "\n", timegm_seconds(2025, 12, 31, 0, 0, 0) / 86400);
   ASSERT_EQ(f.time.size(), 2u);
   EXPECT_EQ(f.time[0].seconds, timegm_seconds(2025, 12, 31, 23, 59, 58));
   EXPECT_EQ(f.time[1].seconds, timegm_seconds(2026, 1, 1, 0, 0, 1));
@@ -99,9 +100,11 @@ TEST(Nmea, DetectedFromTheFirstSentenceEvenAfterAByteOrderMark) {
 }
 
 TEST(Nmea, RefusalsNameTheLineAndTheField) {
-  EXPECT_NE(error_of(std::string(kGga) + "\n").find("--date"), std::string::npos);
-  EXPECT_NE(error_of("hello\n").find("gps.nmea:1: not an NMEA sentence"), std::string::npos);
-  const auto field_error = [](const std::string& body) { return error_of(std::string(kRmc) + "\n" + nmea_sentence(body) + "\n"); };
+  EXPECT_NE(nmea_error(std::string(kGga) + "\n").find("--date"), std::string::npos);
+  EXPECT_NE(nmea_error("hello\n").find("gps.nmea:1: not an NMEA sentence"), std::string::npos);
+  const auto field_error = [](const std::string& body) {
+    return nmea_error(std::string(kRmc) + "\n" + nmea_sentence(body) + "\n");
+  };
   EXPECT_NE(field_error("GPGGA,12351,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,").find("gps.nmea:2: GPGGA field 1"),
             std::string::npos);
   EXPECT_NE(field_error("GPGGA,123519,4867.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,").find("field 2: minutes"),

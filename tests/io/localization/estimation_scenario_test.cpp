@@ -27,13 +27,6 @@ namespace {
 namespace fs = std::filesystem;
 using Sets = std::set<std::vector<std::size_t>>;
 
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The outlier sets (numbered from 1) met on a 1001 x 1000 grid of the frame, by size.
 std::map<std::size_t, Sets> grid_sets() {
   std::map<std::size_t, Sets> out;
@@ -50,8 +43,8 @@ TEST(EstimateScenario, Seed004Example2ProvesTheOutlierSetsOfTheGrid) {
   const std::string out = temp_folder("estimate") + "/example2";
   const CommandResult r = run_gesmi({"estimate", source_dir() + "/missions/setinv/seed004_example2.yaml", "-o", out});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(read(out + "/summary.txt"), r.out);
-  const nlohmann::json summary = nlohmann::json::parse(read(out + "/summary.json"));
+  EXPECT_EQ(file_text(out + "/summary.txt"), r.out);
+  const nlohmann::json summary = nlohmann::json::parse(file_text(out + "/summary.json"));
   std::map<std::size_t, Sets> proved;
   std::size_t levels = 0;
   for (const nlohmann::json& level : summary["levels"]) {
@@ -89,7 +82,7 @@ TEST(EstimateScenario, BadScenarioGivesOneLineAndWritesNothing) {
 
 // Example 2's file with its solver line replaced.
 std::string example2_with_solver(const std::string& dir, const std::string& solver) {
-  std::string text = read(source_dir() + "/missions/setinv/seed004_example2.yaml");
+  std::string text = file_text(source_dir() + "/missions/setinv/seed004_example2.yaml");
   const std::string line = "solver: {epsilon: 0.005}";
   const std::size_t at = text.find(line);
   EXPECT_NE(at, std::string::npos);
@@ -100,7 +93,7 @@ std::string example2_with_solver(const std::string& dir, const std::string& solv
 }
 
 int line_of(const std::string& path, const std::string& text) {
-  const std::string content = read(path);
+  const std::string content = file_text(path);
   return 1 + static_cast<int>(std::count(content.begin(), content.begin() + static_cast<std::ptrdiff_t>(content.find(text)), '\n'));
 }
 
@@ -132,7 +125,7 @@ TEST(EstimateScenario, BadLimitsAndRepeatedLevelsAreRefused) {
            {"solver: {epsilon: 0.005, max_box: 10}", "max_box"},
            {"solver: {epsilon: 0.005}\noutliers: {levels: [0, 2, 0]}", "outliers.levels[2]: 0 is listed twice"}}) {
     const std::string path = example2_with_solver(dir, solver);
-    std::string text = read(path);
+    std::string text = file_text(path);
     if (solver.find("outliers") != std::string::npos) {  // the file's own levels line goes
       const std::size_t at = text.rfind("outliers: {levels: [0, 1");
       text.erase(at, text.find('\n', at) - at);
@@ -168,7 +161,7 @@ TEST(EstimateScenario, ABoxLimitIsReportedInTheSummaryAndTheJson) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("WARNING: the box limit (solver.max_boxes: 3000) was hit"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("time limit"), std::string::npos) << r.out;
-  const nlohmann::json summary = nlohmann::json::parse(read(dir + "/out/summary.json"));
+  const nlohmann::json summary = nlohmann::json::parse(file_text(dir + "/out/summary.json"));
   EXPECT_TRUE(summary["box_limit_hit"]);
   EXPECT_FALSE(summary["time_limit_hit"]);
   EXPECT_EQ(summary["limits"]["max_boxes"], 3000);

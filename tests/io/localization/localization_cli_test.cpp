@@ -19,13 +19,6 @@ namespace fs = std::filesystem;
 
 std::string scenario(const std::string& name) { return source_dir() + "/missions/localization/" + name; }
 
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(LocalizeCli, WritesPavingsComponentsSummaryAndPicture) {
   const std::string out = temp_folder("localize") + "/triangle";
   const CommandResult r = run_gesmi({"localize", scenario("triangle_two_hypotheses.yaml"), "-o", out});
@@ -34,14 +27,14 @@ TEST(LocalizeCli, WritesPavingsComponentsSummaryAndPicture) {
   EXPECT_NE(r.out.find("holds the true pose"), std::string::npos) << r.out;
   for (const char* f : {"inner.csv", "boundary.csv", "components.csv", "summary.txt", "summary.json", "paving.h5", "paving.png"})
     EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
-  EXPECT_EQ(read(out + "/summary.txt"), r.out);
-  const std::string components = read(out + "/components.csv");
+  EXPECT_EQ(file_text(out + "/summary.txt"), r.out);
+  const std::string components = file_text(out + "/components.csv");
   EXPECT_EQ(line_count(components), 3);
-  EXPECT_EQ(read(out + "/inner.csv").rfind("component,x_lo,x_hi,y_lo,y_hi,theta_lo_rad,theta_hi_rad\n", 0), 0u);
+  EXPECT_EQ(file_text(out + "/inner.csv").rfind("component,x_lo,x_hi,y_lo,y_hi,theta_lo_rad,theta_hi_rad\n", 0), 0u);
   // The HDF5 file holds the same boxes as the CSV files.
   const io::H5File h5 = io::H5File::open_read(out + "/paving.h5");
-  EXPECT_EQ(static_cast<int>(h5.shape("/inner/boxes").rows) + 1, line_count(read(out + "/inner.csv")));
-  EXPECT_EQ(static_cast<int>(h5.shape("/boundary/boxes").rows) + 1, line_count(read(out + "/boundary.csv")));
+  EXPECT_EQ(static_cast<int>(h5.shape("/inner/boxes").rows) + 1, line_count(file_text(out + "/inner.csv")));
+  EXPECT_EQ(static_cast<int>(h5.shape("/boundary/boxes").rows) + 1, line_count(file_text(out + "/boundary.csv")));
   EXPECT_EQ(h5.shape("/components/hull").rows, 2u);
   EXPECT_EQ(h5.string_attribute("/", "scenario").value_or(""), "triangle_two_hypotheses");
   // No temporary file is left behind.
@@ -81,7 +74,7 @@ struct BadRun {
 
 TEST(LocalizeCli, BadInputIsOneLineExitTwoAndNothingWritten) {
   const std::string dir = temp_folder("localize_bad");
-  std::string valid = read(scenario("triangle_two_hypotheses.yaml"));
+  std::string valid = file_text(scenario("triangle_two_hypotheses.yaml"));
   const auto with = [&](const std::string& from, const std::string& to) {
     std::string t = valid;
     t.replace(t.find(from), from.size(), to);
@@ -141,7 +134,7 @@ TEST(LocalizeCli, MissingOutputFolderParentIsRefusedBeforeSolving) {
 TEST(LocalizeCli, NoConsistentPoseExitsThreeWithAResult) {
   // Fixed policy, no outlier allowed, one range far beyond any wall: empty set.
   const std::string dir = temp_folder("localize_empty");
-  std::string t = read(scenario("triangle_two_hypotheses.yaml"));
+  std::string t = file_text(scenario("triangle_two_hypotheses.yaml"));
   const std::string from = "{sensor: T1, range: ";
   const auto at = t.find(from) + from.size();
   t.replace(at, t.find('}', at) - at, "40.0");

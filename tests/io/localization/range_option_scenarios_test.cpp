@@ -12,11 +12,11 @@
 #include "io/localization/localization_scenario.h"
 #include "solver/setinv/localization/range_data.h"
 #include "tests/support/paths.h"
+#include "solver/model/angles.h"
 
 namespace gesmi {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 LocalizationProblem scenario(const std::string& name) {
   return io::read_localization_scenario(test::source_dir() + "/missions/localization/" + name);
@@ -32,7 +32,8 @@ void expect_within_stated_accuracy(const LocalizationHypothesis& h, const Pose<d
   EXPECT_TRUE(Interval(pose.y - 0.1, pose.y + 0.1).is_superset(hull[1])) << hull[1].lo() << " " << hull[1].hi();
   const double turns = std::round((hull[2].mid() - pose.theta) / (2 * std::numbers::pi));
   const double theta = pose.theta + turns * 2 * std::numbers::pi;
-  EXPECT_TRUE(Interval(theta - 4 * kDeg, theta + 4 * kDeg).is_superset(hull[2])) << hull[2].lo() << " " << hull[2].hi();
+  EXPECT_TRUE(Interval(theta - 4 * kRadiansPerDegree, theta + 4 * kRadiansPerDegree).is_superset(hull[2]))
+      << hull[2].lo() << " " << hull[2].hi();
 }
 
 const LocalizationHypothesis* holding(const LocalizationResult& r, const Pose<double>& pose) {

@@ -20,9 +20,9 @@ namespace {
 
 using test::contains;
 
-constexpr double kMax = std::numeric_limits<double>::max();
+using test::kMax;
 constexpr double kTiny = std::numeric_limits<double>::denorm_min();
-constexpr long double kPi = 3.141592653589793238462643383279502884L;
+using test::kPiLong;
 
 // f's value v (long double, error far below a double ulp) lies in y, up to a
 // margin of 2^-58 relative that absorbs the oracle's own error.
@@ -156,21 +156,21 @@ TEST(IntervalElementary, TangentIsUnboundedExactlyAcrossAPole) {
 
 TEST(IntervalElementary, ArctangentStaysWithinHalfPi) {
   const Interval a = atan(Interval::entire());  // the closure reaches +-pi/2
-  EXPECT_GE(a.hi(), kPi / 2);
-  EXPECT_LE(a.lo(), -kPi / 2);
+  EXPECT_GE(a.hi(), kPiLong / 2);
+  EXPECT_LE(a.lo(), -kPiLong / 2);
   EXPECT_LE(a.hi(), Interval::half_pi().hi());
   EXPECT_GE(a.lo(), -Interval::half_pi().hi());
   EXPECT_EQ(atan(Interval(0.0)), Interval(0.0));
-  EXPECT_TRUE(encloses(atan(Interval(1.0)), kPi / 4));
+  EXPECT_TRUE(encloses(atan(Interval(1.0)), kPiLong / 4));
   check_sampled([](const Interval& x) { return atan(x); }, [](long double t) { return std::atan(t); }, -1e3, 1e3,
                 20000, 10);
 }
 
 TEST(IntervalElementary, Atan2CoversEveryQuadrantAndTheCut) {
-  EXPECT_TRUE(encloses(atan2(Interval(1.0), Interval(1.0)), kPi / 4));
-  EXPECT_TRUE(encloses(atan2(Interval(1.0), Interval(-1.0)), 3 * kPi / 4));
-  EXPECT_TRUE(encloses(atan2(Interval(-1.0), Interval(-1.0)), -3 * kPi / 4));
-  EXPECT_TRUE(encloses(atan2(Interval(-1.0), Interval(1.0)), -kPi / 4));
+  EXPECT_TRUE(encloses(atan2(Interval(1.0), Interval(1.0)), kPiLong / 4));
+  EXPECT_TRUE(encloses(atan2(Interval(1.0), Interval(-1.0)), 3 * kPiLong / 4));
+  EXPECT_TRUE(encloses(atan2(Interval(-1.0), Interval(-1.0)), -3 * kPiLong / 4));
+  EXPECT_TRUE(encloses(atan2(Interval(-1.0), Interval(1.0)), -kPiLong / 4));
   EXPECT_EQ(atan2(Interval(0.0), Interval(-1.0)), Interval::pi());  // the cut belongs to +pi
   EXPECT_EQ(atan2(Interval(0.0), Interval(2.0)), Interval(0.0));
   EXPECT_TRUE(atan2(Interval(0.0), Interval(0.0)).is_empty());
@@ -178,7 +178,7 @@ TEST(IntervalElementary, Atan2CoversEveryQuadrantAndTheCut) {
   EXPECT_EQ(atan2(Interval(-1.0, 1.0), Interval(-2.0, -1.0)), Interval(-Interval::pi().hi(), Interval::pi().hi()));
   // Touching the cut from above only: the angle stays in [3pi/4, pi].
   const Interval upper = atan2(Interval(0.0, 1.0), Interval(-2.0, -1.0));
-  EXPECT_TRUE(encloses(upper, kPi));
+  EXPECT_TRUE(encloses(upper, kPiLong));
   EXPECT_GE(upper.lo(), 2.0);
   // Boxes around the origin.
   EXPECT_EQ(atan2(Interval(0.0, 1.0), Interval(-1.0, 1.0)), Interval(0.0, Interval::pi().hi()));

@@ -23,7 +23,7 @@ using test::contains;
 using test::contains_point;
 using test::to_string;
 
-constexpr long double kPi = 3.141592653589793238462643383279502884L;
+using test::kPiLong;
 
 using Unary = std::function<Interval(const Interval&)>;
 using Binary = std::function<Interval(const Interval&, const Interval&)>;
@@ -271,20 +271,21 @@ TEST(IntervalReverse, SinCosTanReversesFindTheExtremeSolutionsOverSeveralPeriods
     const Interval x(lo, hi);
     const long double as = std::asin(static_cast<long double>(c)), ac = std::acos(static_cast<long double>(c));
     const long double at = std::atan(static_cast<long double>(t));
-    ASSERT_TRUE(matches_hull(sin_rev(Interval(c), x), solution_hull({as, kPi - as}, 2 * kPi, lo, hi), "sin_rev"));
-    ASSERT_TRUE(matches_hull(cos_rev(Interval(c), x), solution_hull({ac, -ac}, 2 * kPi, lo, hi), "cos_rev"));
-    ASSERT_TRUE(matches_hull(tan_rev(Interval(t), x), solution_hull({at}, kPi, lo, hi), "tan_rev"));
+    ASSERT_TRUE(
+        matches_hull(sin_rev(Interval(c), x), solution_hull({as, kPiLong - as}, 2 * kPiLong, lo, hi), "sin_rev"));
+    ASSERT_TRUE(matches_hull(cos_rev(Interval(c), x), solution_hull({ac, -ac}, 2 * kPiLong, lo, hi), "cos_rev"));
+    ASSERT_TRUE(matches_hull(tan_rev(Interval(t), x), solution_hull({at}, kPiLong, lo, hi), "tan_rev"));
   }
 }
 
 TEST(IntervalReverse, PeriodicReversesOnKnownSets) {
   // sin x = 1/2 on [0, 13]: pi/6 + 2k pi and 5pi/6 + 2k pi; the extremes are pi/6 and
   // 5pi/6 + 2pi (pi/6 + 4pi = 13.09 is just outside).
-  EXPECT_TRUE(matches_hull(sin_rev(Interval(0.5), Interval(0.0, 13.0)), {kPi / 6, 17 * kPi / 6}, "sin"));
+  EXPECT_TRUE(matches_hull(sin_rev(Interval(0.5), Interval(0.0, 13.0)), {kPiLong / 6, 17 * kPiLong / 6}, "sin"));
   // cos x = 1/2 on [-10, 10]: +-pi/3 + 2k pi; the extremes are -7pi/3 and 7pi/3.
-  EXPECT_TRUE(matches_hull(cos_rev(Interval(0.5), Interval(-10.0, 10.0)), {-7 * kPi / 3, 7 * kPi / 3}, "cos"));
+  EXPECT_TRUE(matches_hull(cos_rev(Interval(0.5), Interval(-10.0, 10.0)), {-7 * kPiLong / 3, 7 * kPiLong / 3}, "cos"));
   // tan x = 1 on [-5, 5]: pi/4 + k pi; the extremes are -3pi/4 and 5pi/4.
-  EXPECT_TRUE(matches_hull(tan_rev(Interval(1.0), Interval(-5.0, 5.0)), {-3 * kPi / 4, 5 * kPi / 4}, "tan"));
+  EXPECT_TRUE(matches_hull(tan_rev(Interval(1.0), Interval(-5.0, 5.0)), {-3 * kPiLong / 4, 5 * kPiLong / 4}, "tan"));
   // No solution inside: sin x = 1 only at pi/2 + 2k pi.
   EXPECT_TRUE(sin_rev(Interval(1.0), Interval(2.0, 3.0)).is_empty());
   EXPECT_TRUE(sin_rev(Interval(2.0, 3.0), Interval::entire()).is_empty());
@@ -295,8 +296,8 @@ TEST(IntervalReverse, PeriodicReversesOnKnownSets) {
   EXPECT_LE(left.hi(), 1e-15);
   EXPECT_GE(left.hi(), 0.0);
   const Interval right = sin_rev(Interval(0.0), Interval(0.5, kInf));  // first solution: pi
-  EXPECT_LE(right.lo(), kPi);
-  EXPECT_GT(right.lo(), kPi - 1e-15L);
+  EXPECT_LE(right.lo(), kPiLong);
+  EXPECT_GT(right.lo(), kPiLong - 1e-15L);
   EXPECT_EQ(right.hi(), kInf);
 }
 
@@ -323,9 +324,9 @@ TEST(IntervalReverse, Atan2ReverseKeepsPointsInEveryQuadrantAndOnTheCut) {
 
 TEST(IntervalReverse, Atan2ReverseContractsTheBoxInEachQuadrant) {
   // theta = pi/4 +- 0.01 with |y| <= 1: y = x tan(theta) gives |x| <= 1 / tan(pi/4 - 0.01).
-  const long double bound = 1.0L / std::tan(kPi / 4 - 0.01L);
+  const long double bound = 1.0L / std::tan(kPiLong / 4 - 0.01L);
   for (const int quadrant : {0, 1, 2, 3}) {
-    const long double center = kPi / 4 + quadrant * kPi / 2 - (quadrant >= 2 ? 2 * kPi : 0);
+    const long double center = kPiLong / 4 + quadrant * kPiLong / 2 - (quadrant >= 2 ? 2 * kPiLong : 0);
     const Interval theta(static_cast<double>(center - 0.01L), static_cast<double>(center + 0.01L));
     const double sx = (quadrant == 0 || quadrant == 3) ? 1.0 : -1.0, sy = quadrant <= 1 ? 1.0 : -1.0;
     Interval x = sx > 0 ? Interval(0.0, 10.0) : Interval(-10.0, 0.0);

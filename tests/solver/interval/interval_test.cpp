@@ -19,7 +19,7 @@ namespace {
 
 using test::contains;
 
-constexpr double kMax = std::numeric_limits<double>::max();
+using test::kMax;
 const Interval kEmpty = Interval::empty();
 const Interval kEntire = Interval::entire();
 

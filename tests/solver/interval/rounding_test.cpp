@@ -3,6 +3,7 @@
 // in which the sums and products of the short doubles used here are exact.
 
 #include "solver/interval/rounding.h"
+#include "tests/support/expect_interval.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,7 @@
 namespace gesmi {
 namespace {
 
-constexpr double kMax = std::numeric_limits<double>::max();
+using test::kMax;
 constexpr double kTiny = std::numeric_limits<double>::denorm_min();
 
 static_assert(std::numeric_limits<long double>::digits >= 64, "the oracle needs x87 long double");

@@ -18,16 +18,14 @@
 namespace gesmi {
 namespace {
 
-using Mat3 = Eigen::Matrix3d;
-using Vec3 = Eigen::Vector3d;
 using MatX = Eigen::MatrixXd;
 using VecX = Eigen::VectorXd;
 
-Mat3 random_spd(std::mt19937_64& rng, double scale) {
+Eigen::Matrix3d random_spd(std::mt19937_64& rng, double scale) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Mat3 a;
+  Eigen::Matrix3d a;
   for (int i = 0; i < 9; ++i) a(i / 3, i % 3) = u(rng);
-  return scale * (a * a.transpose() + 0.5 * Mat3::Identity());
+  return scale * (a * a.transpose() + 0.5 * Eigen::Matrix3d::Identity());
 }
 
 // The same factors applied to both a chain and a dense information matrix.
@@ -41,12 +39,12 @@ struct Both {
   }
   Eigen::Index p(std::size_t k) const { return static_cast<Eigen::Index>(3 * k); }
   Eigen::Index m() const { return static_cast<Eigen::Index>(3 * n); }
-  void position(std::size_t k, const Mat3& w, const Vec3& mean) {
+  void position(std::size_t k, const Eigen::Matrix3d& w, const Eigen::Vector3d& mean) {
     chain.add_position(k, w, mean);
     lambda.block<3, 3>(p(k), p(k)) += w;
     eta.segment<3>(p(k)) += w * mean;
   }
-  void step(std::size_t k, const Mat3& w, const Vec3& delta) {
+  void step(std::size_t k, const Eigen::Matrix3d& w, const Eigen::Vector3d& delta) {
     chain.add_step(k, w, delta);
     lambda.block<3, 3>(p(k), p(k)) += w;
     lambda.block<3, 3>(p(k + 1), p(k + 1)) += w;
@@ -67,8 +65,10 @@ struct Both {
   // prior of information about 0.5 on every `prior_every`-th position.
   void random_chain(std::mt19937_64& rng, double step_scale, std::size_t prior_every) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    for (std::size_t k = 0; k + 1 < n; ++k) step(k, random_spd(rng, step_scale), Vec3(u(rng), u(rng), u(rng)));
-    for (std::size_t k = 0; k < n; k += prior_every) position(k, random_spd(rng, 0.5), Vec3(u(rng), u(rng), u(rng)));
+    for (std::size_t k = 0; k + 1 < n; ++k)
+      step(k, random_spd(rng, step_scale), Eigen::Vector3d(u(rng), u(rng), u(rng)));
+    for (std::size_t k = 0; k < n; k += prior_every)
+      position(k, random_spd(rng, 0.5), Eigen::Vector3d(u(rng), u(rng), u(rng)));
   }
   // A mixed row of random coefficients and value, of information weight + u (u in [-1, 1]).
   void random_mixed(std::mt19937_64& rng, std::size_t k, double weight) {
@@ -84,8 +84,9 @@ TEST(ArrowheadChain, MatchesADenseLeastSquaresSolve) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const std::size_t n = 60, q = 6;
   Both b(n, q);
-  for (std::size_t k = 0; k + 1 < n; ++k) b.step(k, random_spd(rng, 50.0), Vec3(u(rng), u(rng), u(rng)));
-  for (std::size_t k = 0; k < n; k += 7) b.position(k, random_spd(rng, 0.5), Vec3(u(rng), u(rng), 10 * u(rng)));
+  for (std::size_t k = 0; k + 1 < n; ++k) b.step(k, random_spd(rng, 50.0), Eigen::Vector3d(u(rng), u(rng), u(rng)));
+  for (std::size_t k = 0; k < n; k += 7)
+    b.position(k, random_spd(rng, 0.5), Eigen::Vector3d(u(rng), u(rng), 10 * u(rng)));
   for (const std::size_t k : {std::size_t{11}, std::size_t{12}, std::size_t{30}, std::size_t{45}, std::size_t{59}})
     for (int r = 0; r < 3; ++r) b.random_mixed(rng, k, 3.0);
   b.chain.solve();
@@ -118,22 +119,22 @@ TEST(ArrowheadChain, HandsOverItsCovariancesSymmetricAndOnce) {
   b.chain.solve_means();
   EXPECT_THROW(b.chain.take_covariances(), std::logic_error);  // no covariance pass yet
   b.chain.solve_covariances();
-  std::vector<Mat3> shown;
+  std::vector<Eigen::Matrix3d> shown;
   for (std::size_t k = 0; k < n; ++k) shown.push_back(b.chain.covariance(k));
   const std::vector<double> taken = b.chain.take_covariances();
   ASSERT_EQ(taken.size(), 9 * n);
   const MatX cov = Eigen::LDLT<MatX>(b.lambda).solve(MatX::Identity(b.lambda.rows(), b.lambda.cols()));
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> row_major(taken.data() + 9 * k);
-    ASSERT_EQ(Mat3(row_major), shown[k]) << k;  // also column-major: symmetric bit for bit
-    EXPECT_LT((Mat3(row_major) - cov.block<3, 3>(b.p(k), b.p(k))).norm(), 1e-8) << k;
+    ASSERT_EQ(Eigen::Matrix3d(row_major), shown[k]) << k;  // also column-major: symmetric bit for bit
+    EXPECT_LT((Eigen::Matrix3d(row_major) - cov.block<3, 3>(b.p(k), b.p(k))).norm(), 1e-8) << k;
   }
   EXPECT_THROW(b.chain.take_covariances(), std::logic_error);  // handed over already
   EXPECT_THROW(b.chain.covariance(0), std::logic_error);       // (the blocks are gone)
-  EXPECT_THROW(b.chain.add_position(0, Mat3::Identity(), Vec3::Zero()), std::logic_error);
+  EXPECT_THROW(b.chain.add_position(0, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero()), std::logic_error);
   EXPECT_THROW(b.chain.add_position_row(0, Eigen::RowVector3d(0, 0, 1), 1.0, 1.0), std::logic_error);
   b.chain.reset();  // the blocks again, zero
-  b.chain.add_position(0, Mat3::Identity(), Vec3::Zero());
+  b.chain.add_position(0, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
 }
 
 // The smoother without biases keeps the odometry's information between passes and adds
@@ -147,16 +148,16 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const std::size_t n = 700, q = 6;  // (several of the backward pass's recomputed blocks)
-  std::vector<Mat3> w;
-  std::vector<Vec3> delta;
+  std::vector<Eigen::Matrix3d> w;
+  std::vector<Eigen::Vector3d> delta;
   for (std::size_t k = 0; k + 1 < n; ++k) {
     w.push_back(random_spd(rng, 50.0));
-    delta.push_back(Vec3(u(rng), u(rng), u(rng)));
+    delta.push_back(Eigen::Vector3d(u(rng), u(rng), u(rng)));
   }
   // The factors of one pass, which change between passes.
   const auto other_factors = [&](ArrowheadChain& chain, unsigned seed) {
     std::mt19937_64 pass(seed);
-    chain.add_position(0, 1e-10 * Mat3::Identity(), Vec3::Zero());
+    chain.add_position(0, 1e-10 * Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
     for (std::size_t k = 0; k < n; k += 5) chain.add_position_row(k, Eigen::RowVector3d(0, 0, 1), 10 * u(pass), 2 + u(pass));
     for (const std::size_t k : {std::size_t{40}, std::size_t{41}, std::size_t{300}, std::size_t{699}}) {
       Eigen::RowVectorXd hm = Eigen::RowVectorXd::Zero(q);
@@ -169,13 +170,15 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
   std::vector<double> reference;
   for (std::size_t k = 0; k < n; ++k)
     for (const double scale : {100.0, 100.0, 10.0}) reference.push_back(scale * u(rng));
-  const auto point = [&](std::size_t k) { return Vec3(reference[3 * k], reference[3 * k + 1], reference[3 * k + 2]); };
+  const auto point = [&](std::size_t k) {
+    return Eigen::Vector3d(reference[3 * k], reference[3 * k + 1], reference[3 * k + 2]);
+  };
   ArrowheadChain kept(n, q);
   for (std::size_t k = 0; k + 1 < n; ++k) kept.add_step(k, w[k], delta[k]);
   // The same information handed to the constructor (the smoother's dead reckoning keeps
   // it before the chain exists): kept as above, and refused with a step missing.
   std::vector<ArrowheadChain::Symmetric3> upper;
-  for (const Mat3& block : w) upper.push_back(ArrowheadChain::Symmetric3::upper_of(block));
+  for (const Eigen::Matrix3d& block : w) upper.push_back(ArrowheadChain::Symmetric3::upper_of(block));
   ArrowheadChain given(n, q, upper);
   EXPECT_THROW(given.add_step(0, w[0], delta[0]), std::logic_error);  // would make it 2W
   EXPECT_THROW(ArrowheadChain(n, q, std::vector<ArrowheadChain::Symmetric3>(upper.begin() + 1, upper.end())),
@@ -184,7 +187,7 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
     kept.reset_keeping_steps();
     // The blocks are not zeroed by reset_keeping_steps(): nothing but add_steps_again(),
     // which writes every one, may come next.
-    EXPECT_THROW(kept.add_position(0, Mat3::Identity(), Vec3::Zero()), std::logic_error);
+    EXPECT_THROW(kept.add_position(0, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero()), std::logic_error);
     EXPECT_THROW(kept.add_position_row(0, Eigen::RowVector3d(0, 0, 1), 1.0, 1.0), std::logic_error);
     EXPECT_THROW(kept.solve_means(), std::logic_error);
     kept.add_steps_again(delta, reference);
@@ -215,7 +218,8 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
   }
   // One delta per step, and only while the steps' information is kept.
   kept.reset_keeping_steps();
-  EXPECT_THROW(kept.add_steps_again(std::span<const Vec3>(delta).first(n - 2), reference), std::invalid_argument);
+  EXPECT_THROW(kept.add_steps_again(std::span<const Eigen::Vector3d>(delta).first(n - 2), reference),
+               std::invalid_argument);
   kept.release_workspace();
   EXPECT_THROW(kept.reset_keeping_steps(), std::logic_error);
 }
@@ -224,8 +228,8 @@ TEST(ArrowheadChain, StepsKeptAndAddedAgainAndMeansFirstSolveAsOneSolveOfTheStep
 // onto kept information, steps added again twice or after a plain reset, a solve or a
 // covariance pass on a released workspace. Chains of no and one position solve.
 TEST(ArrowheadChain, RefusesCallsThatWouldSolveAnotherSystem) {
-  const Mat3 w = 4.0 * Mat3::Identity();
-  const std::vector<Vec3> delta(3, Vec3(1.0, 0.0, 0.0));
+  const Eigen::Matrix3d w = 4.0 * Eigen::Matrix3d::Identity();
+  const std::vector<Eigen::Vector3d> delta(3, Eigen::Vector3d(1.0, 0.0, 0.0));
   ArrowheadChain chain(4, 1);
   for (std::size_t k = 0; k < 3; ++k) chain.add_step(k, w, delta[k]);
   chain.reset_keeping_steps();
@@ -234,9 +238,9 @@ TEST(ArrowheadChain, RefusesCallsThatWouldSolveAnotherSystem) {
   EXPECT_THROW(chain.add_steps_again(delta, std::span<const double>(reference).first(9)), std::invalid_argument);
   chain.add_steps_again(delta, reference);
   EXPECT_THROW(chain.add_steps_again(delta, reference), std::logic_error);  // twice
-  chain.add_position(0, Mat3::Identity(), Vec3::Zero());
+  chain.add_position(0, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
   chain.solve_means();
-  EXPECT_LT((chain.mean(3) - Vec3(3.0, 0.0, 0.0)).norm(), 1e-12);  // the three steps from p_0 = 0
+  EXPECT_LT((chain.mean(3) - Eigen::Vector3d(3.0, 0.0, 0.0)).norm(), 1e-12);  // the three steps from p_0 = 0
   EXPECT_THROW(chain.add_steps_again(delta, reference), std::logic_error);  // after a solve
   chain.release_workspace();
   EXPECT_THROW(chain.solve_covariances(), std::logic_error);  // the workspace is gone
@@ -251,10 +255,10 @@ TEST(ArrowheadChain, RefusesCallsThatWouldSolveAnotherSystem) {
   ArrowheadChain one(1, 0);
   one.reset_keeping_steps();
   one.add_steps_again({}, std::vector<double>{0.0, 0.0, 0.0});
-  one.add_position(0, 2.0 * Mat3::Identity(), Vec3(1.0, 2.0, 3.0));
+  one.add_position(0, 2.0 * Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.0, 2.0, 3.0));
   one.solve();
-  EXPECT_LT((one.mean(0) - Vec3(1.0, 2.0, 3.0)).norm(), 1e-12);
-  EXPECT_LT((one.covariance(0) - 0.5 * Mat3::Identity()).norm(), 1e-12);
+  EXPECT_LT((one.mean(0) - Eigen::Vector3d(1.0, 2.0, 3.0)).norm(), 1e-12);
+  EXPECT_LT((one.covariance(0) - 0.5 * Eigen::Matrix3d::Identity()).norm(), 1e-12);
 }
 
 // Cross covariances Cov(p_k, m), kept at chosen steps and for chosen columns at every
@@ -325,8 +329,8 @@ TEST(ArrowheadChain, MatchesASparseSolveAcrossRecomputedBlocks) {
   };
   add_block(m, m, 1e-12 * MatX::Identity(q, q));
   for (std::size_t k = 0; k + 1 < n; ++k) {
-    const Mat3 w = random_spd(rng, 50.0);
-    const Vec3 delta(u(rng), u(rng), u(rng));
+    const Eigen::Matrix3d w = random_spd(rng, 50.0);
+    const Eigen::Vector3d delta(u(rng), u(rng), u(rng));
     chain.add_step(k, w, delta);
     add_block(p(k), p(k), w);
     add_block(p(k + 1), p(k + 1), w);
@@ -336,8 +340,8 @@ TEST(ArrowheadChain, MatchesASparseSolveAcrossRecomputedBlocks) {
     eta.segment<3>(p(k + 1)) += w * delta;
   }
   for (std::size_t k = 0; k < n; k += 7) {
-    const Mat3 w = random_spd(rng, 0.5);
-    const Vec3 mean(u(rng), u(rng), 10 * u(rng));
+    const Eigen::Matrix3d w = random_spd(rng, 0.5);
+    const Eigen::Vector3d mean(u(rng), u(rng), 10 * u(rng));
     chain.add_position(k, w, mean);
     add_block(p(k), p(k), w);
     eta.segment<3>(p(k)) += w * mean;
@@ -399,15 +403,15 @@ TEST(ArrowheadChain, MatchesTheTextbookKalmanRtsSmoother) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const std::size_t n = 200;
-  std::vector<Vec3> control(n), measurement(n);
-  std::vector<Mat3> q_noise(n), r_noise(n);
+  std::vector<Eigen::Vector3d> control(n), measurement(n);
+  std::vector<Eigen::Matrix3d> q_noise(n), r_noise(n);
   ArrowheadChain chain(n, 0);
-  const Mat3 p0 = 100.0 * Mat3::Identity();
-  const Vec3 x0(1.0, -2.0, 3.0);
+  const Eigen::Matrix3d p0 = 100.0 * Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d x0(1.0, -2.0, 3.0);
   chain.add_position(0, p0.inverse(), x0);
   for (std::size_t k = 0; k < n; ++k) {
-    control[k] = Vec3(u(rng), u(rng), u(rng));
-    measurement[k] = Vec3(u(rng), u(rng), u(rng)) * 10.0;
+    control[k] = Eigen::Vector3d(u(rng), u(rng), u(rng));
+    measurement[k] = Eigen::Vector3d(u(rng), u(rng), u(rng)) * 10.0;
     q_noise[k] = random_spd(rng, 0.01);
     r_noise[k] = random_spd(rng, 2.0);
     chain.add_position(k, r_noise[k].inverse(), measurement[k]);
@@ -415,10 +419,10 @@ TEST(ArrowheadChain, MatchesTheTextbookKalmanRtsSmoother) {
   }
   chain.solve();
   // Forward filter.
-  std::vector<Vec3> xf(n), xp(n);
-  std::vector<Mat3> pf(n), pp(n);
-  Vec3 x = x0;
-  Mat3 p = p0;
+  std::vector<Eigen::Vector3d> xf(n), xp(n);
+  std::vector<Eigen::Matrix3d> pf(n), pp(n);
+  Eigen::Vector3d x = x0;
+  Eigen::Matrix3d p = p0;
   for (std::size_t k = 0; k < n; ++k) {
     if (k > 0) {
       x = xf[k - 1] + control[k - 1];
@@ -426,16 +430,16 @@ TEST(ArrowheadChain, MatchesTheTextbookKalmanRtsSmoother) {
     }
     xp[k] = x;
     pp[k] = p;
-    const Mat3 gain = p * (p + r_noise[k]).inverse();
+    const Eigen::Matrix3d gain = p * (p + r_noise[k]).inverse();
     xf[k] = x + gain * (measurement[k] - x);
-    pf[k] = (Mat3::Identity() - gain) * p;
+    pf[k] = (Eigen::Matrix3d::Identity() - gain) * p;
   }
   // RTS backward pass.
-  Vec3 xs = xf[n - 1];
-  Mat3 ps = pf[n - 1];
+  Eigen::Vector3d xs = xf[n - 1];
+  Eigen::Matrix3d ps = pf[n - 1];
   EXPECT_LT((chain.mean(n - 1) - xs).norm(), 1e-9);
   for (std::size_t k = n - 1; k-- > 0;) {
-    const Mat3 c = pf[k] * pp[k + 1].inverse();
+    const Eigen::Matrix3d c = pf[k] * pp[k + 1].inverse();
     xs = xf[k] + c * (xs - xp[k + 1]);
     ps = pf[k] + c * (ps - pp[k + 1]) * c.transpose();
     EXPECT_LT((chain.mean(k) - xs).norm(), 1e-9) << k;

@@ -12,7 +12,6 @@
 namespace gesmi {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // y(t) = a sin(w t + p) + b t with |y'| <= a w + |b| = rate.
 struct Signal {
@@ -24,10 +23,10 @@ Signal random_signal(std::mt19937_64& rng, double rate) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double share = u(rng);  // of the rate taken by the sine
   const double w = 0.05 + 2.0 * u(rng);
-  return {share * rate / w, w, 2.0 * kPi * u(rng), (u(rng) < 0.5 ? -1.0 : 1.0) * (1.0 - share) * rate};
+  return {share * rate / w, w, 2.0 * std::numbers::pi * u(rng), (u(rng) < 0.5 ? -1.0 : 1.0) * (1.0 - share) * rate};
 }
 
-double wrapped(double angle) { return std::remainder(angle, 2.0 * kPi); }
+double wrapped(double angle) { return std::remainder(angle, 2.0 * std::numbers::pi); }
 
 struct Case {
   ChannelReadings readings;
@@ -80,12 +79,12 @@ TEST(BetweenReadings, HeadingsAcrossTheWrapHoldTheTruthModuloTwoPi) {
   for (int trial = 0; trial < 200; ++trial) {
     const double rate = 0.05, e = 5.27e-3;
     Signal y = random_signal(rng, rate);
-    y.p += kPi;  // start near the wrap: the drift and the sine cross +-pi
+    y.p += std::numbers::pi;  // start near the wrap: the drift and the sine cross +-pi
     const Case c = make_case(rng, y, trial % 4 ? 0.05 : 40.0, e, true);
     const ChannelAtGrid at = enclose_between_readings(c.readings, c.grid, rate, true);
     ASSERT_FALSE(at.conflict) << "trial " << trial;
     for (std::size_t i = 1; i < c.readings.value.size(); ++i)
-      wraps += std::fabs(c.readings.value[i] - c.readings.value[i - 1]) > kPi;
+      wraps += std::fabs(c.readings.value[i] - c.readings.value[i - 1]) > std::numbers::pi;
     for (std::size_t k = 0; k < c.grid.size(); ++k) {
       const double off = wrapped(y(c.grid[k]) - at.value[k]);
       ASSERT_LE(std::fabs(off), at.half_width[k]) << "trial " << trial << " t " << c.grid[k];
@@ -104,12 +103,12 @@ TEST(BetweenReadings, HeadingsFarApartKeepTheTruthWhenSeveralBranchesAreWithinRe
   for (int trial = 0; trial < 200; ++trial) {
     const double rate = 0.3, e = 5.27e-3;
     Signal y = random_signal(rng, rate);
-    y.p += kPi;
+    y.p += std::numbers::pi;
     const Case c = make_case(rng, y, trial % 2 ? 15.0 : 40.0, e, true);
     const ChannelAtGrid at = enclose_between_readings(c.readings, c.grid, rate, true);
     ASSERT_FALSE(at.conflict) << "trial " << trial;
     for (std::size_t i = 1; i < c.readings.value.size(); ++i)
-      wraps += std::fabs(c.readings.value[i] - c.readings.value[i - 1]) > kPi;
+      wraps += std::fabs(c.readings.value[i] - c.readings.value[i - 1]) > std::numbers::pi;
     for (std::size_t k = 0; k < c.grid.size(); ++k) {
       ASSERT_LE(std::fabs(wrapped(y(c.grid[k]) - at.value[k])), at.half_width[k]) << "trial " << trial << " t " << c.grid[k];
       ++checked;
@@ -123,7 +122,7 @@ TEST(BetweenReadings, HeadingsFarApartKeepTheTruthWhenSeveralBranchesAreWithinRe
   const std::vector<double> grid = {6.0};
   const ChannelAtGrid at = enclose_between_readings(r, grid, 0.5, true);
   ASSERT_FALSE(at.conflict);
-  EXPECT_LE(std::fabs(wrapped(1.0 - (1.0 - (5.5 - 2.0 * kPi)) * 0.6 - at.value[0])), at.half_width[0]);
+  EXPECT_LE(std::fabs(wrapped(1.0 - (1.0 - (5.5 - 2.0 * std::numbers::pi)) * 0.6 - at.value[0])), at.half_width[0]);
 }
 
 TEST(BetweenReadings, BoxesAreTheReadingAtItsTimeAndTheNarrowerSideBetween) {

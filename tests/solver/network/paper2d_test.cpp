@@ -100,10 +100,10 @@ void expect_subset(const Paper2dDomains& inner, const Paper2dDomains& reference)
   for (std::size_t k = 0; k < 3; ++k) EXPECT_TRUE(contains(outer.z[k], inner.z[k])) << "z" << k + 1;
 }
 
-struct Case {
+struct Paper2dCase {
   double dv, dz, dx;
 };
-const Case kCases[] = {{0, 0, kInf}, {1, 0, kInf}, {1, 1, kInf}, {1, 1, 1}, {2, 0.5, 3}, {0.3, 2, kInf}};
+const Paper2dCase kCases[] = {{0, 0, kInf}, {1, 0, kInf}, {1, 1, kInf}, {1, 1, 1}, {2, 0.5, 3}, {0.3, 2, kInf}};
 
 TEST(Paper2d, PriorDomainsFollowThePaperRule) {
   const Paper2dDomains d = paper2d_prior({1.0, 2.0, kInf});
@@ -118,7 +118,7 @@ TEST(Paper2d, PriorDomainsFollowThePaperRule) {
 }
 
 TEST(Paper2d, TrueConfigurationStaysInsideEveryDomain) {
-  for (const Case& c : kCases) {
+  for (const Paper2dCase& c : kCases) {
     SCOPED_TRACE(::testing::Message() << "dv=" << c.dv << " dz=" << c.dz << " dx=" << c.dx);
     const Paper2dResult r = solve_paper2d(paper2d_prior({c.dv, c.dz, c.dx}));
     EXPECT_FALSE(r.report.empty);
@@ -142,7 +142,7 @@ TEST(Paper2d, ExactInputsAndRangesGiveSingletons) {
 // are solutions of the problem: no contraction may exclude them.
 TEST(Paper2d, RandomFeasibleConfigurationsStayInside) {
   std::mt19937_64 rng(2024);
-  for (const Case& c : kCases) {
+  for (const Paper2dCase& c : kCases) {
     if (c.dz == 0.0) continue;  // exact ranges: the solutions have measure zero
     const Paper2dDomains prior = paper2d_prior({c.dv, c.dz, c.dx});
     const Paper2dResult r = solve_paper2d(prior);
@@ -178,7 +178,7 @@ TEST(Paper2d, RandomFeasibleConfigurationsStayInside) {
 }
 
 TEST(Paper2d, IsAtLeastAsTightAsThePapersDecomposition) {
-  for (const Case& c : kCases) {
+  for (const Paper2dCase& c : kCases) {
     SCOPED_TRACE(::testing::Message() << "dv=" << c.dv << " dz=" << c.dz << " dx=" << c.dx);
     const Paper2dDomains prior = paper2d_prior({c.dv, c.dz, c.dx});
     expect_subset(solve_paper2d(prior).domains, paper_fixpoint(prior));

@@ -23,7 +23,7 @@
 namespace gesmi {
 namespace {
 
-struct Case {
+struct SoundnessCase {
   std::string name;
   Mission mission;
   std::vector<PositionFix> fixes;
@@ -45,8 +45,8 @@ test::TinyMission with_marks_between_samples(test::TinyMission t) {
   return t;
 }
 
-std::vector<Case> base_cases() {
-  std::vector<Case> cases;
+std::vector<SoundnessCase> base_cases() {
+  std::vector<SoundnessCase> cases;
   for (const std::uint64_t seed : {41u}) {
     for (const test::TinyErrors e : {test::TinyErrors::uniform, test::TinyErrors::worst_case}) {
       test::TinyMission t = test::make_tiny_mission(seed, e);
@@ -68,18 +68,18 @@ std::vector<Case> base_cases() {
 }
 
 // Corruptions of one constraint each: a mark's range, a fix's position.
-std::vector<Case> variants(const Case& base) {
-  std::vector<Case> out = {base};
+std::vector<SoundnessCase> variants(const SoundnessCase& base) {
+  std::vector<SoundnessCase> out = {base};
   for (const double delta : {0.5, 3.0, 40.0}) {
     for (std::size_t j = 0; j < base.mission.mark_count(); j += std::max<std::size_t>(1, base.mission.mark_count() / 3)) {
-      Case c = base;
+      SoundnessCase c = base;
       c.name += " mark " + std::to_string(j) + " +" + std::to_string(delta);
       c.mission.mark_range[j] += (j % 2 ? -1.0 : 1.0) * delta;
       c.truthful = false;
       out.push_back(std::move(c));
     }
     for (std::size_t f = 0; f < base.fixes.size(); f += std::max<std::size_t>(1, base.fixes.size() / 2)) {
-      Case c = base;
+      SoundnessCase c = base;
       c.name += " fix " + std::to_string(f) + " +" + std::to_string(delta);
       c.fixes[f].box[f % 2] = c.fixes[f].box[f % 2] + Interval(delta);
       c.truthful = false;
@@ -102,7 +102,7 @@ std::string text(const Interval& x) {
 constexpr double kRounding = 1e-8;  // m
 double worst_excess = 0.0;
 
-bool encloses(const Interval& outer, const Interval& inner) {
+bool encloses_up_to_rounding(const Interval& outer, const Interval& inner) {
   if (inner.is_empty() || outer.is_superset(inner)) return true;  // also for unbounded domains
   const double excess = std::max(outer.lo() - inner.lo(), inner.hi() - outer.hi());
   worst_excess = std::max(worst_excess, excess);
@@ -119,8 +119,8 @@ TEST(ReducedNetworkSoundness, EnclosesTheFullSolutionAndTheTruthAndNeverProvesAC
   SolverOptions options;
   options.tolerance = 1e-6;  // near the fixpoint, so that containment compares settled domains
   options.max_sweeps = 400;
-  for (const Case& base : base_cases()) {
-    for (const Case& c : variants(base)) {
+  for (const SoundnessCase& base : base_cases()) {
+    for (const SoundnessCase& c : variants(base)) {
       const Mission& m = c.mission;
       const MissionNetwork net = build_network(m, m.model, c.fixes);
       const TubeDomains sensor = sensor_domains(m, m.model);
@@ -145,7 +145,7 @@ TEST(ReducedNetworkSoundness, EnclosesTheFullSolutionAndTheTruthAndNeverProvesAC
         const auto k = static_cast<std::size_t>(std::lower_bound(m.time.begin(), m.time.end(), reduced.time[i]) - m.time.begin());
         ++events_checked;
         for (int axis = 0; axis < 3; ++axis)
-          if (!encloses(rd.position(i)[axis], full.position(k)[axis]))
+          if (!encloses_up_to_rounding(rd.position(i)[axis], full.position(k)[axis]))
             fail(c.name + ": event " + std::to_string(i) + " (sample " + std::to_string(k) + "), axis " +
                  std::to_string(axis) + ": the reduced domain " + text(rd.position(i)[axis]) +
                  " does not enclose the full one " + text(full.position(k)[axis]));
@@ -158,7 +158,7 @@ TEST(ReducedNetworkSoundness, EnclosesTheFullSolutionAndTheTruthAndNeverProvesAC
       }
       for (std::size_t j = 0; j < full.mines.size(); ++j)
         for (int axis = 0; axis < 3; ++axis) {
-          if (!encloses(rd.mines[j][axis], full.mines[j][axis]))
+          if (!encloses_up_to_rounding(rd.mines[j][axis], full.mines[j][axis]))
             fail(c.name + ": mine " + std::to_string(j) + ": the reduced box does not enclose the full one");
           if (c.truthful && !rd.mines[j][axis].contains(m.truth_mines[3 * j + static_cast<std::size_t>(axis)]))
             fail(c.name + ": mine " + std::to_string(j) + ": the reduced box misses the truth");

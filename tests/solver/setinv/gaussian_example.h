@@ -46,4 +46,9 @@ inline std::vector<std::size_t> gaussian_phi(double p1, double p2) {
   return phi;
 }
 
+/// Whether the point (x, y) lies in the first two components of the box.
+inline bool point_in(std::span<const Interval> box, double x, double y) {
+  return box[0].contains(x) && box[1].contains(y);
+}
+
 }  // namespace gesmi::test

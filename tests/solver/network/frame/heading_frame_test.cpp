@@ -16,13 +16,14 @@
 #include "solver/network/sensors/sensor_priors.h"
 #include "solver/network/sensors/sensor_boxes.h"
 #include "tests/support/smooth_truth.h"
+#include "tests/support/expect_interval.h"
 
 namespace gesmi {
 namespace {
 
 using test::SmoothTruth;
 
-bool holds(const Interval& x, long double value) { return x.lo() <= value && value <= x.hi(); }
+using test::holds;
 
 // A per-sample margin as the solver stores it: a float at or above the value.
 float float_above(double x) { return std::nextafter(static_cast<float>(x), INFINITY); }

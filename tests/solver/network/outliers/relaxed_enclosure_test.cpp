@@ -47,10 +47,11 @@ bool brute_force_hull(const Problem& p, std::size_t q, TubeDomains& hull) {
 // Both sides are outward-rounded enclosures of the same set, computed along
 // different paths: they may differ at rounding level (seen: 6e-12 m), so containment
 // is checked to 1 nm, far below any modelling error.
-constexpr double kRounding = 1e-9;
+constexpr double kEndpointRounding = 1e-9;
 
 ::testing::AssertionResult encloses(const Interval& outer, const Interval& inner) {
-  if (inner.is_empty() || (outer.lo() <= inner.lo() + kRounding && inner.hi() <= outer.hi() + kRounding))
+  if (inner.is_empty() ||
+      (outer.lo() <= inner.lo() + kEndpointRounding && inner.hi() <= outer.hi() + kEndpointRounding))
     return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "[" << inner.lo() << ", " << inner.hi() << "] not in [" << outer.lo() << ", "
                                        << outer.hi() << "]";

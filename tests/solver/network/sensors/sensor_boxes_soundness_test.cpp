@@ -24,6 +24,7 @@
 #include <string>
 
 #include "tests/support/bounded_rate_mission.h"
+#include "tests/support/expect_interval.h"
 
 namespace gesmi {
 namespace {
@@ -32,8 +33,10 @@ using test::BoundedRateMission;
 using test::BoundedRateOptions;
 using test::kDisplacementError;
 
-bool holds(const Interval& box, long double v) { return box.lo() <= v && v <= box.hi(); }
-bool holds(const Interval& box, long double v, long double error) { return box.lo() <= v - error && v + error <= box.hi(); }
+using test::holds;
+bool holds_with_margin(const Interval& box, long double v, long double error) {
+  return box.lo() <= v - error && v + error <= box.hi();
+}
 
 std::string describe(const char* what, std::size_t k, long double t, const Interval& box, long double v) {
   char b[256];
@@ -186,7 +189,8 @@ TEST(SensorBoxesSoundness, StepIncrementHoldsTheTrueDisplacement) {
       long double truth[3];
       b.truth.displacement(m.time[k], m.time[k + 1], truth);
       for (int i = 0; i < 3; ++i) {
-        if (!holds(d[i], truth[i], kDisplacementError)) f.add(describe("increment", k, m.time[k], d[i], truth[i]));
+        if (!holds_with_margin(d[i], truth[i], kDisplacementError))
+          f.add(describe("increment", k, m.time[k], d[i], truth[i]));
         const long double gap = std::min(truth[i] - d[i].lo(), d[i].hi() - truth[i]);
         tightest = std::min(tightest, static_cast<double>(gap / (m.time[k + 1] - m.time[k])));
       }

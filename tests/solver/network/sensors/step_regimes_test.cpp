@@ -17,7 +17,7 @@
 namespace gesmi {
 namespace {
 
-constexpr long double kPi = std::numbers::pi_v<long double>;
+constexpr long double kPiLong = std::numbers::pi_v<long double>;
 
 // A sine a sin(omega t + phase) and its integral from 0.
 struct Sine {
@@ -34,11 +34,12 @@ struct Burst {
   long double at(long double t) const {
     const long double u = (t - start) / tau;
     if (u <= 0.0L || u >= 1.0L) return 0.0L;
-    return amplitude * (std::sin(2 * kPi * u) / 2 - std::sin(4 * kPi * u) / 4);
+    return amplitude * (std::sin(2 * kPiLong * u) / 2 - std::sin(4 * kPiLong * u) / 4);
   }
   long double integral(long double t) const {
     const long double u = std::clamp((t - start) / tau, 0.0L, 1.0L);
-    return amplitude * tau * ((1 - std::cos(2 * kPi * u)) / (4 * kPi) - (1 - std::cos(4 * kPi * u)) / (16 * kPi));
+    return amplitude * tau *
+           ((1 - std::cos(2 * kPiLong * u)) / (4 * kPiLong) - (1 - std::cos(4 * kPiLong * u)) / (16 * kPiLong));
   }
 };
 
@@ -131,8 +132,8 @@ TEST(StepRegimes, ABurstBeyondTheJerkBoundFallsBackAndTheStepsKeepTheTruth) {
   // over 1 s is about 48.4 (sampled finely below).
   long double peak = 0.0L;
   for (int j = 0; j <= 100000; ++j) {
-    const long double x = 2 * kPi * j / 100000;
-    peak = std::max(peak, std::fabs(-2 * kPi * kPi * std::sin(x) + 4 * kPi * kPi * std::sin(2 * x)));
+    const long double x = 2 * kPiLong * j / 100000;
+    peak = std::max(peak, std::fabs(-2 * kPiLong * kPiLong * std::sin(x) + 4 * kPiLong * kPiLong * std::sin(2 * x)));
   }
   truth.burst = Burst{100.05L, 1.0L, 10.0L / peak};
   const Mission m = mission_of(truth, 200.0);

@@ -17,6 +17,7 @@
 #include "solver/solve/solve_mission.h"
 #include "tests/support/smooth_truth.h"
 #include "tests/support/truth_checks.h"
+#include "tests/support/expect_interval.h"
 
 namespace gesmi {
 namespace {
@@ -26,7 +27,7 @@ using test::mission_of;
 using test::model_with;
 using test::truths;
 
-bool holds(const Interval& x, long double value) { return x.lo() <= value && value <= x.hi(); }
+using test::holds;
 
 struct Misses {
   int steps = 0, between = 0, checks = 0;

@@ -27,7 +27,7 @@
 namespace gesmi {
 namespace {
 
-struct Case {
+struct KernelCase {
   Vec3I p, m;
   Interval roll, pitch, heading, altitude;
   double slack = 0.0;
@@ -41,8 +41,8 @@ class Cases {
   // A mine placed where the geometry holds or nearly: its body-frame offset at the edge
   // of the along-track tolerance, the range or the side, its depth at the edge of the
   // band, then often moved a little; boxes from points to metres wide.
-  Case next() {
-    Case c;
+  KernelCase next() {
+    KernelCase c;
     c.g.along_tolerance = pick({0.0, 0.05, 1.0, 2.5});
     c.g.depth_band = pick({0.0, 0.25, 0.75, 2.0});
     c.g.max_range = pick({20.0, 75.0, 150.0});
@@ -98,7 +98,7 @@ class Cases {
   std::mt19937_64 rng_;
 };
 
-SonarPlane plane_of(const Case& c) {
+SonarPlane plane_of(const KernelCase& c) {
   SonarPlane plane;
   plane.attitude = make_attitude(c.roll, c.pitch, c.heading);
   plane.altitude = c.altitude;
@@ -115,7 +115,7 @@ TEST(WaterfallKernel, KeepsWhatThePortableCellsKeepWithTheSameBounds) {
   int refused = 0, undecided = 0, kept = 0, rough_rejected = 0, contractor_rejected = 0;
   int failures = 0, lost = 0;  // cells that differ; of them, rejected by the kernel only
   for (int n = 0; n < 300000; ++n) {
-    const Case c = cases.next();
+    const KernelCase c = cases.next();
     KernelStep step;
     if (!prepare_kernel_step(c.p, c.roll, c.pitch, c.heading, c.altitude, c.slack, step) || !kernel_takes(c.m)) {
       ++refused;
@@ -248,7 +248,7 @@ TEST(WaterfallKernel, MissionWaterfallsAreThePortableOnes) {
 
 TEST(WaterfallKernel, RestoresTheRoundingMode) {
   Cases cases(5);
-  const Case c = cases.next();
+  const KernelCase c = cases.next();
   KernelStep step;
   ASSERT_TRUE(prepare_kernel_step(c.p, c.roll, c.pitch, c.heading, c.altitude, c.slack, step));
   const KernelMine mine{{c.m[0].lo(), c.m[1].lo(), c.m[2].lo()}, {c.m[0].hi(), c.m[1].hi(), c.m[2].hi()}};

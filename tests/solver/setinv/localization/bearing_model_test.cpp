@@ -14,12 +14,11 @@
 namespace gesmi {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TEST(BearingModel, AngleWindowsWrapAroundTheTurn) {
-  EXPECT_TRUE(angle_within(kPi - 0.01, -kPi + 0.01, 0.03));
+  EXPECT_TRUE(angle_within(std::numbers::pi - 0.01, -std::numbers::pi + 0.01, 0.03));
   EXPECT_FALSE(angle_within(0.5, 0.0, 0.3));
-  EXPECT_TRUE(angle_within(Interval(2 * kPi - 0.01, 2 * kPi + 0.01), 0.0, 0.02).is_true());
+  EXPECT_TRUE(angle_within(Interval(2 * std::numbers::pi - 0.01, 2 * std::numbers::pi + 0.01), 0.0, 0.02).is_true());
   EXPECT_TRUE(angle_within(Interval(0.5, 0.6), 0.0, 0.3).is_false());
   EXPECT_TRUE(angle_within(Interval(0.2, 0.4), 0.0, 0.3).is_maybe());
   EXPECT_TRUE(angle_within(Interval(-4.0, 3.0), 1.0, 0.1).is_maybe());
@@ -45,7 +44,8 @@ TEST(BearingModel, BoxVerdictsHoldForEveryPointOfTheBox) {
   ASSERT_GE(m.size(), 5u);
   BearingData data(map.walls, map.landmarks, sensors, m);
   std::mt19937 rng(4);
-  std::uniform_real_distribution<double> ux(0.5, 9.5), uy(0.5, 7.5), ut(-kPi, kPi), unit(0, 1);
+  std::uniform_real_distribution<double> ux(0.5, 9.5), uy(0.5, 7.5), ut(-std::numbers::pi, std::numbers::pi),
+      unit(0, 1);
   std::vector<IBool> box_out(m.size(), IBool::maybe()), point_out(m.size(), IBool::maybe());
   int settled = 0;
   for (int trial = 0; trial < 300; ++trial) {

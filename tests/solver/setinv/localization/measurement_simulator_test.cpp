@@ -16,7 +16,6 @@
 namespace gesmi {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // A 2 m square room, faces inwards (counter-clockwise), and one sonar looking to -x
 // from the robot's origin: at x = 0.3 its echo is the wall x = 0, 0.3 m away.
@@ -24,7 +23,7 @@ const LocalizationMap kRoom{{{0, 0, 2, 0}, {2, 0, 2, 2}, {2, 2, 0, 2}, {0, 2, 0,
 const Pose<double> kTruth{0.3, 1.0, 0.0};
 
 RangeSensor backward_sonar(double max_range) {
-  RangeSensor s{"back", 0.0, 0.0, kPi, 11.3 * kPi / 180.0, 0.02};
+  RangeSensor s{"back", 0.0, 0.0, std::numbers::pi, 11.3 * std::numbers::pi / 180.0, 0.02};
   s.max_range = max_range;
   return s;
 }
@@ -91,7 +90,8 @@ TEST(MeasurementSimulator, BearingOutliersEndWhateverThePrecision) {
       o.seed = seed;
       const auto data = simulate_bearings(open, {s}, origin, o);
       ASSERT_EQ(data.size(), 1u);
-      EXPECT_GE(std::abs(std::remainder(data[0].bearing, 2.0 * kPi)), margin) << precision << " seed " << seed;
+      EXPECT_GE(std::abs(std::remainder(data[0].bearing, 2.0 * std::numbers::pi)), margin)
+          << precision << " seed " << seed;
     }
   }
   // 10 delta + 0.05 >= pi: no bearing is that far.

@@ -9,11 +9,11 @@
 #include <random>
 
 #include "solver/setinv/localization/range_model.h"
+#include "solver/model/angles.h"
 
 namespace gesmi {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kSamples = 20000;
 
 // What sampling the segment sees from s: the nearest point of [ab] ∩ cone at
@@ -47,7 +47,7 @@ TEST(RangeBlindZone, PointRemotenessIsTheNearestHeardPointOfRaySampling) {
   int beyond = 0, at_blind = 0, unheard = 0;  // the three cases of the definition
   for (int trial = 0; trial < 4000; ++trial) {
     const Segment w{u(rng), u(rng), u(rng), u(rng)};
-    const double sx = u(rng), sy = u(rng), axis = angle(rng), gamma = 11.3 * kDeg;
+    const double sx = u(rng), sy = u(rng), axis = angle(rng), gamma = 11.3 * kRadiansPerDegree;
     const double plain = remoteness(Vec2T<double>{sx, sy}, unit(axis - gamma), unit(axis + gamma), w, 0.0);
     const Sampled all = sample(sx, sy, axis, gamma, w, 0.0);
     if (all.farthest < 0.0) {  // nothing in the cone: nothing heard, whatever b
@@ -82,7 +82,7 @@ TEST(RangeBlindZone, ZeroBlindDistanceIsTheSeedModel) {
   for (int trial = 0; trial < 300; ++trial) {
     const Segment w{u(rng), u(rng), u(rng), u(rng)};
     const Vec2T<double> s{u(rng), u(rng)};
-    const double axis = angle(rng), gamma = 11.3 * kDeg;
+    const double axis = angle(rng), gamma = 11.3 * kRadiansPerDegree;
     const double plain = remoteness(s, unit(axis - gamma), unit(axis + gamma), w, 0.0);
     const double tiny = remoteness(s, unit(axis - gamma), unit(axis + gamma), w, 1e-300);
     EXPECT_EQ(plain, tiny) << trial;
@@ -94,7 +94,7 @@ TEST(RangeBlindZone, ZeroBlindDistanceIsTheSeedModel) {
 TEST(RangeBlindZone, BoxRemotenessOfAWallEnclosesEveryPoint) {
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(-1.5, 1.5), unit01(0, 1), angle(-std::numbers::pi, std::numbers::pi);
-  const double gamma = 11.3 * kDeg;
+  const double gamma = 11.3 * kRadiansPerDegree;
   int changed = 0, checked = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     const Segment w{u(rng), u(rng), u(rng), u(rng)};
@@ -125,7 +125,7 @@ TEST(RangeBlindZone, BoxRangeOfASensorInARoomEnclosesEveryPoint) {
   std::uniform_real_distribution<double> u(-1.8, 1.5), unit01(0, 1), angle(-std::numbers::pi, std::numbers::pi);
   const std::vector<Segment> walls{{-2, -2, 2, -2}, {2, -2, 2, 2}, {2, 2, -2, 2}, {-2, 2, -2, -2},
                                    {0.2, 0.2, 0.2, 0.4}, {0.2, 0.4, 0.4, 0.4}, {0.4, 0.4, 0.4, 0.2}, {0.4, 0.2, 0.2, 0.2}};
-  RangeSensor sensor{"s", 0.2, 0.1, 30 * kDeg, 11.3 * kDeg, 0.02};
+  RangeSensor sensor{"s", 0.2, 0.1, 30 * kRadiansPerDegree, 11.3 * kRadiansPerDegree, 0.02};
   sensor.blind_distance = 0.5;
   int changed = 0;
   for (int trial = 0; trial < 600; ++trial) {

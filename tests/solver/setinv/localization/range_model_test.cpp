@@ -10,11 +10,11 @@
 #include <random>
 
 #include "solver/setinv/localization/range_data.h"
+#include "solver/model/angles.h"
 
 namespace gesmi {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Nearest point of [a b] ∩ cone by dense sampling of the segment; inf when the
 // sensor is behind the reflecting face or nothing is in the cone.
@@ -37,7 +37,7 @@ TEST(RangeModel, RemotenessAgreesWithRayGeometryOnPoints) {
   int finite = 0;
   for (int trial = 0; trial < 400; ++trial) {
     const Segment w{u(rng), u(rng), u(rng), u(rng)};
-    const double sx = u(rng), sy = u(rng), axis = angle(rng), gamma = 11.3 * kDeg;
+    const double sx = u(rng), sy = u(rng), axis = angle(rng), gamma = 11.3 * kRadiansPerDegree;
     const Vec2T<double> s{sx, sy}, u1{std::cos(axis - gamma), std::sin(axis - gamma)},
         u2{std::cos(axis + gamma), std::sin(axis + gamma)};
     const double r = remoteness(s, u1, u2, w, 0.0);
@@ -58,9 +58,9 @@ TEST(RangeModel, DistanceAlongAUnitVectorUsesTheDeterminant) {
   // Seed 000 Example 1 prints <ab, u> in the denominator; the geometry needs
   // det(ab, u): from (0, 1) straight down to the line y = 0 the distance is 1.
   const Segment w{0, 0, 1, 0};
-  const double g = 5 * kDeg;
-  const Vec2T<double> s{0.5, 1.0}, u1{std::cos(-90 * kDeg - g), std::sin(-90 * kDeg - g)},
-      u2{std::cos(-90 * kDeg + g), std::sin(-90 * kDeg + g)};
+  const double g = 5 * kRadiansPerDegree;
+  const Vec2T<double> s{0.5, 1.0}, u1{std::cos(-90 * kRadiansPerDegree - g), std::sin(-90 * kRadiansPerDegree - g)},
+      u2{std::cos(-90 * kRadiansPerDegree + g), std::sin(-90 * kRadiansPerDegree + g)};
   EXPECT_NEAR(remoteness(s, u1, u2, w, 0.0), 1.0, 1e-12);
   // Behind the face (below the segment), nothing comes back.
   const Vec2T<double> below{0.5, -1.0};
@@ -71,7 +71,7 @@ TEST(RangeModel, BoxEvaluationEnclosesEveryPointEvaluation) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(-4, 4), unit(0, 1), angle(-std::numbers::pi, std::numbers::pi);
   const std::vector<Segment> walls{{-5, -5, 5, -5}, {5, -5, 5, 5}, {5, 5, -5, 5}, {-5, 5, -5, -5}, {-1, 0, 1, 0.5}};
-  const RangeSensor sensor{"s", 0.2, 0.1, 30 * kDeg, 11.3 * kDeg, 0.02};
+  const RangeSensor sensor{"s", 0.2, 0.1, 30 * kRadiansPerDegree, 11.3 * kRadiansPerDegree, 0.02};
   for (int trial = 0; trial < 300; ++trial) {
     const double x = u(rng), y = u(rng), th = angle(rng);
     const double wx = 0.3 * unit(rng), wy = 0.3 * unit(rng), wt = 0.4 * unit(rng);
@@ -93,7 +93,9 @@ TEST(RangeModel, RangeDataPruningKeepsTheVerdictsOfTheFullModel) {
   // The per-level wall pruning must give the same data verdicts as member(f(P), D).
   const std::vector<Segment> walls{{-5, -5, 5, -5}, {5, -5, 5, 5}, {5, 5, -5, 5}, {-5, 5, -5, -5}, {-1, 0, 1, 0.5}};
   std::vector<RangeSensor> sensors;
-  for (int i = 0; i < 6; ++i) sensors.push_back({"s", 0.2 * std::cos(i * 60 * kDeg), 0.2 * std::sin(i * 60 * kDeg), i * 60 * kDeg, 11.3 * kDeg, 0.02});
+  for (int i = 0; i < 6; ++i)
+    sensors.push_back({"s", 0.2 * std::cos(i * 60 * kRadiansPerDegree), 0.2 * std::sin(i * 60 * kRadiansPerDegree),
+                       i * 60 * kRadiansPerDegree, 11.3 * kRadiansPerDegree, 0.02});
   const Pose<double> truth{1.0, -2.0, 0.4};
   std::vector<RangeMeasurement> measurements;
   for (std::size_t i = 0; i < sensors.size(); ++i)

@@ -13,11 +13,11 @@
 #include "solver/setinv/localization/range_contractor.h"
 #include "solver/setinv/localization/range_data.h"
 #include "solver/setinv/localization/range_model.h"
+#include "solver/model/angles.h"
 
 namespace gesmi {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Readings a true range r can give: d with r in d [1 - alpha, 1 + alpha]. "No echo"
 // is possible when one of them, sampled finely, exceeds max_range.
@@ -33,7 +33,7 @@ TEST(RangeNoEcho, FeasibleSetHoldsEveryRangeThatCanReadBeyondMaxRange) {
   std::uniform_real_distribution<double> range(0.5, 20.0), precision(0.0, 0.1), rel(-0.2, 0.2);
   int possible = 0, impossible = 0;
   for (int trial = 0; trial < 2000; ++trial) {
-    RangeSensor s{"s", 0, 0, 0, 10 * kDeg, precision(rng)};
+    RangeSensor s{"s", 0, 0, 0, 10 * kRadiansPerDegree, precision(rng)};
     s.max_range = range(rng);
     const Interval y = feasible_range({0, kNoEcho}, s);
     EXPECT_EQ(y.hi(), kInf);
@@ -64,8 +64,8 @@ std::vector<Segment> open_room() {
 std::vector<RangeSensor> belt(double max_range, double blind) {
   std::vector<RangeSensor> sensors;
   for (int i = 0; i < 8; ++i) {
-    const double a = i * 45 * kDeg;
-    RangeSensor s{"s" + std::to_string(i), 0.25 * std::cos(a), 0.25 * std::sin(a), a, 11.3 * kDeg, 0.02};
+    const double a = i * 45 * kRadiansPerDegree;
+    RangeSensor s{"s" + std::to_string(i), 0.25 * std::cos(a), 0.25 * std::sin(a), a, 11.3 * kRadiansPerDegree, 0.02};
     s.max_range = max_range;
     s.blind_distance = blind;
     sensors.push_back(s);

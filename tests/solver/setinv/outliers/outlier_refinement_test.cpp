@@ -28,8 +28,6 @@ struct Example2 {
   }
 };
 
-bool holds(std::span<const Interval> box, double x, double y) { return box[0].contains(x) && box[1].contains(y); }
-
 TEST(OutlierRefinement, StillEnclosesTheSetAndStaysInsideSiviasBoxes) {
   const Example2 e;
   ASSERT_FALSE(e.refined.limit_hit());
@@ -39,7 +37,7 @@ TEST(OutlierRefinement, StillEnclosesTheSetAndStaysInsideSiviasBoxes) {
       const double p1 = -2.0 + 0.02 * i, p2 = 0.005 + 0.01 * k;
       if (gaussian_phi(p1, p2).size() > 2) continue;
       bool found = false;
-      for (std::size_t b = 0; b < e.refined.size() && !found; ++b) found = holds(e.refined.box(b), p1, p2);
+      for (std::size_t b = 0; b < e.refined.size() && !found; ++b) found = test::point_in(e.refined.box(b), p1, p2);
       EXPECT_TRUE(found) << p1 << " " << p2;
     }
   // Box for box inside the given pavings: inner boxes inside inner boxes.

@@ -17,11 +17,11 @@ namespace {
 
 using test::gaussian_phi;
 
-struct Example2 {
+struct PartitionedExample2 {
   ImageInBox<test::GaussianDensity> data{test::GaussianDensity{}, test::gaussian_data()};
   OutlierPaving refined;
   OutlierPartition partition;
-  Example2() {
+  PartitionedExample2() {
     SiviaOptions o;
     o.epsilon = 0.01;
     const SiviaResult sq = sivia_q(data, 2, std::span<const Box>(&test::gaussian_frame(), 1), o);
@@ -33,15 +33,14 @@ struct Example2 {
   }
 };
 
-bool holds(std::span<const Interval> box, double x, double y) { return box[0].contains(x) && box[1].contains(y); }
 bool in_paving(const Paving& p, double x, double y) {
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (holds(p.box(i), x, y)) return true;
+    if (test::point_in(p.box(i), x, y)) return true;
   return false;
 }
 
 TEST(OutlierSetPavings, InnerBoxesOfASetHaveExactlyThatPhi) {
-  const Example2 e;
+  const PartitionedExample2 e;
   std::size_t checked = 0;
   for (const OutlierSetPaving& s : e.partition.sets) {
     EXPECT_LE(s.outliers.size(), 2u);
@@ -58,7 +57,7 @@ TEST(OutlierSetPavings, InnerBoxesOfASetHaveExactlyThatPhi) {
 }
 
 TEST(OutlierSetPavings, EveryPointOfS2LiesInThePavingOfItsSet) {
-  const Example2 e;
+  const PartitionedExample2 e;
   std::set<OutlierSet> on_grid;
   for (int i = 0; i <= 500; ++i)
     for (int k = 0; k < 300; ++k) {
@@ -85,7 +84,7 @@ TEST(OutlierSetPavings, EveryPointOfS2LiesInThePavingOfItsSet) {
 }
 
 TEST(OutlierSetPavings, TheUnionOfThePartitionIsTheRefinedEnclosure) {
-  const Example2 e;
+  const PartitionedExample2 e;
   const auto key = [](std::span<const Interval> b) { return std::vector<double>{b[0].lo(), b[0].hi(), b[1].lo(), b[1].hi()}; };
   std::set<std::vector<double>> refined, partition;
   double volume = 0.0;
