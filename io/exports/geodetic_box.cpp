@@ -2,22 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "solver/mission/frame_scale.h"
+#include "solver/model/angles.h"
 
 namespace gesmi::io {
 namespace {
 
-constexpr double kDegree = 180.0 / std::numbers::pi;
 constexpr double kRoundingSlack = 1.0 + 1e-9;  // covers the doubles' rounding in the margins below
 
 // A margin in metres as degrees of latitude, and of longitude at latitudes up to
 // |max_latitude| degrees (both outward).
-double metres_as_latitude(double metres) { return metres / kWgs84SmallestRadius * kDegree * kRoundingSlack; }
+double metres_as_latitude(double metres) { return metres / kWgs84SmallestRadius * kDegreesPerRadian * kRoundingSlack; }
 
 double metres_as_longitude(double metres, double max_latitude) {
-  return metres / (kWgs84EquatorialRadius * std::cos(std::abs(max_latitude) / kDegree)) * kDegree * kRoundingSlack;
+  return metres / (kWgs84EquatorialRadius * std::cos(std::abs(max_latitude) / kDegreesPerRadian)) * kDegreesPerRadian * kRoundingSlack;
 }
 
 }  // namespace
@@ -39,7 +38,7 @@ GeodeticBox widened(GeodeticBox box, double metres, double max_latitude) {
 }
 
 double geodetic_curvature(double max_latitude) {
-  return 4.0 * (1.0 + std::tan(std::abs(max_latitude) / kDegree)) / kWgs84SmallestRadius * kRoundingSlack;
+  return 4.0 * (1.0 + std::tan(std::abs(max_latitude) / kDegreesPerRadian)) / kWgs84SmallestRadius * kRoundingSlack;
 }
 
 double geodetic_margin(double piece, double max_latitude) {
@@ -48,7 +47,7 @@ double geodetic_margin(double piece, double max_latitude) {
 
 double farthest_latitude(double origin_latitude) {
   // A degree of latitude is at least M pi / 180 = 110.57 km long.
-  const double reach = kGeodeticExportRadius / (kWgs84SmallestRadius / kDegree);
+  const double reach = kGeodeticExportRadius / (kWgs84SmallestRadius / kDegreesPerRadian);
   return std::min(std::abs(origin_latitude) + reach + 0.01, 89.9);
 }
 

@@ -6,14 +6,14 @@
 #include "io/text/message_text.h"
 #include "io/text/strict_yaml.h"
 #include "io/time/utc_time.h"
+#include "solver/model/angles.h"
 
 namespace gesmi::io {
 namespace {
 
-constexpr double kDegree = 0.017453292519943295;  // pi / 180 rounded to nearest
 constexpr double kKnot = 1852.0 / 3600.0;           // m/s
 
-const std::vector<MapUnit> kAngleUnits = {{"rad", 1.0}, {"deg", kDegree}};
+const std::vector<MapUnit> kAngleUnits = {{"rad", 1.0}, {"deg", kRadiansPerDegree}};
 const std::vector<MapUnit> kSpeedUnits = {{"m/s", 1.0}, {"knots", kKnot}};
 const std::vector<MapUnit> kLengthUnits = {{"m", 1.0}};
 

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "io/format_error.h"
+#include "io/imports/nav_channel_index.h"
 #include "io/text/csv_number.h"
 #include "io/imports/csv_reader.h"
 #include "io/imports/time_column.h"
@@ -15,8 +16,7 @@
 namespace gesmi::io {
 namespace {
 
-// Channels in nav_map_schema()'s order.
-enum Channel { roll, pitch, heading, vx, vy, vz, altitude, depth, kChannels };
+using namespace nav;  // the channels' indices and names
 
 struct Series {
   ChannelReadings readings;
@@ -30,8 +30,6 @@ double conversion_margin(const std::vector<double>& values) {
   for (const double v : values) largest = std::max(largest, std::fabs(v));
   return mul_up(largest, 0x1p-51);
 }
-
-std::string_view channel_name(int channel) { return nav_map_schema()[static_cast<std::size_t>(channel)].name; }
 
 // The log's columns as the map places them, and each channel's unit.
 struct NavColumns {
@@ -154,7 +152,7 @@ void take_series(LogReadings& log, const std::string& name, const ColumnMap& map
   for (int c = 0; c < kChannels; ++c) {
     Series& from = log.series[c];
     if (from.readings.time.empty())
-      throw FormatError(name + ": " + std::string(channel_name(c)) + ": no reading in the file (column " +
+      throw FormatError(name + ": " + channel_name(c) + ": no reading in the file (column " +
                         quoted_input(map.field(channel_name(c))->column) + ")");
     for (const double v : from.readings.value)
       from.readings.half_width.push_back(model_half_width(out.model, static_cast<std::size_t>(c), v));

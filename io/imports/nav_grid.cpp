@@ -5,14 +5,14 @@
 #include <limits>
 
 #include "io/format_error.h"
+#include "io/imports/nav_channel_index.h"
 #include "io/text/csv_number.h"
 #include "solver/interval/rounding.h"
 
 namespace gesmi::io {
 namespace {
 
-// Channels in nav_channels() order.
-enum Channel { roll, pitch, heading, vx, vy, vz, altitude, depth, kChannels };
+using namespace nav;  // the channels' indices and names
 
 // The DVL's channels: bridged by the speed bound where the log has no reading, which
 // needs no reading nearby (the others are enclosed by their rate from the nearest one).
@@ -24,8 +24,6 @@ constexpr std::vector<double> NavLog::*kValues[kChannels] = {&NavLog::roll, &Nav
                                                               &NavLog::altitude, &NavLog::depth};
 
 std::string seconds_text(double s) { return format_number(std::round(s * 1000.0) / 1000.0) + " s"; }
-
-std::string channel_name(int c) { return std::string(nav_channels()[static_cast<std::size_t>(c)].name); }
 
 // The DVL's rows, and outside their span the other rows and the fixes' times that lie
 // within `usable`.

@@ -1,4 +1,5 @@
 #include "solver/mission/meridian_convergence.h"
+#include "solver/model/angles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +9,6 @@
 namespace gesmi {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
 // The latitude the bound stops at: tan grows without bound towards the pole.
 constexpr double kLargestLatitude = std::numbers::pi / 2 - 0.01;
 // The angle from the Earth's centre up to which the tangent is bounded by its series
@@ -24,13 +24,13 @@ double meridian_convergence_within(double origin_latitude, double distance) {
   // The largest latitude within the distance, not the origin's: at the equator the
   // convergence is not zero a few km north or south of it.
   const double angle = centre_angle(distance);
-  const double latitude = std::min(std::fabs(origin_latitude) * kDegree + angle, kLargestLatitude);
+  const double latitude = std::min(std::fabs(origin_latitude) * kRadiansPerDegree + angle, kLargestLatitude);
   return angle * std::tan(latitude) * 1.01;
 }
 
 MeridianConvergence::MeridianConvergence(double origin_latitude)
     : origin_latitude_(origin_latitude),
-      latitude_(std::fabs(origin_latitude) * kDegree),
+      latitude_(std::fabs(origin_latitude) * kRadiansPerDegree),
       tan_latitude_(std::tan(latitude_)) {}
 
 double MeridianConvergence::within(double distance) const {

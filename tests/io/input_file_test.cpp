@@ -17,7 +17,7 @@
 namespace gesmi::io {
 namespace {
 
-std::string error_of(const std::string& path) {
+std::string open_error(const std::string& path) {
   try {
     require_regular_file(path);
   } catch (const FormatError& e) {
@@ -38,13 +38,13 @@ TEST(InputFile, OnlyRegularFilesPass) {
   std::strncpy(address.sun_path, socket_path.c_str(), sizeof address.sun_path - 1);
   ASSERT_EQ(::bind(s, reinterpret_cast<const sockaddr*>(&address), sizeof address), 0);
 
-  EXPECT_EQ(error_of(file), "");
-  EXPECT_EQ(error_of(folder + "/missing.csv"), folder + "/missing.csv: cannot open the file (does it exist?)");
-  EXPECT_EQ(error_of(folder), folder + ": is a folder, not a file");
+  EXPECT_EQ(open_error(file), "");
+  EXPECT_EQ(open_error(folder + "/missing.csv"), folder + "/missing.csv: cannot open the file (does it exist?)");
+  EXPECT_EQ(open_error(folder), folder + ": is a folder, not a file");
   const std::string stream = ", not a file: gesmi reads its inputs from files (save the stream to one and give that)";
-  EXPECT_EQ(error_of(pipe), pipe + ": is a pipe" + stream);
-  EXPECT_EQ(error_of("/dev/zero"), "/dev/zero: is a device" + stream);
-  EXPECT_EQ(error_of(socket_path), socket_path + ": is a socket" + stream);
+  EXPECT_EQ(open_error(pipe), pipe + ": is a pipe" + stream);
+  EXPECT_EQ(open_error("/dev/zero"), "/dev/zero: is a device" + stream);
+  EXPECT_EQ(open_error(socket_path), socket_path + ": is a socket" + stream);
   ::close(s);
 }
 

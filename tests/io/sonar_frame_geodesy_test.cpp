@@ -20,11 +20,11 @@
 #include "solver/mission/meridian_convergence.h"
 #include "solver/network/sonar_plane.h"
 #include "tests/support/geodetic_sampling.h"
+#include "solver/model/angles.h"
 
 namespace gesmi::io {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr double kBox = 1e-3;  // m: the half-width of every box but the heading's
 
 struct Scene {
@@ -43,7 +43,7 @@ Scene scene(const GeoOrigin& origin, double azimuth, double distance, double bea
   GeographicLib::Geodesic::WGS84().Direct(origin.latitude, origin.longitude, azimuth, distance, robot.latitude,
                                           robot.longitude);
   // The mine from the robot's own axes (east, north, up).
-  const double b = beam * kDegree;
+  const double b = beam * kRadiansPerDegree;
   const GeographicLib::LocalCartesian at_robot(robot.latitude, robot.longitude, -depth);
   double lat = 0, lon = 0, height = 0;
   at_robot.Reverse(across * std::sin(b), across * std::cos(b), -below, lat, lon, height);

@@ -6,16 +6,12 @@
 #include <random>
 
 #include "tests/support/rotation_long_double.h"
+#include "tests/support/random_draws.h"
 
 namespace gesmi::test {
 namespace {
 
-constexpr long double kInside = 1.0L - 1e-9L;  // rates and sample errors strictly inside their bounds
 constexpr long double kPiL = 3.141592653589793238462643383279502884L;
-
-long double uniform(std::mt19937_64& rng, long double lo, long double hi) {
-  return lo + (hi - lo) * static_cast<long double>(rng() >> 11) * 0x1p-53L;
-}
 
 enum class Shape { line, tent_up, tent_down };
 
@@ -35,7 +31,7 @@ void add_step(Track& track, long double t0, long double t1, long double x0, long
   track.x.push_back(x1);
 }
 
-// A reading r with truth = r + side * kInside * bound(r): the truth sits at the
+// A reading r with truth = r + side * kStrictlyInside * bound(r): the truth sits at the
 // `side` end of the sample box (side 0: a random point inside). bound is
 // Lipschitz with a small constant (DVL: 0.004), so a few fixed-point passes solve it.
 template <class Bound>
@@ -149,8 +145,8 @@ BoundedRateMission make_bounded_rate_mission(std::uint64_t seed, const BoundedRa
     const double dt = kSteps[rng() % 10];
     t += rng() % 4 == 0 ? dt * static_cast<double>(uniform(rng, 0.5L, 1.5L)) : dt;
   }
-  const std::vector<long double> attitude_rate(n, model.max_attitude_rate * kInside);
-  const std::vector<long double> acceleration(n, model.max_acceleration * kInside);
+  const std::vector<long double> attitude_rate(n, model.max_attitude_rate * kStrictlyInside);
+  const std::vector<long double> acceleration(n, model.max_acceleration * kStrictlyInside);
 
   TrueMotion& truth = out.truth;
   std::vector<int> side_roll, side_pitch, side_heading, side_vx, side_vy, side_vz, side_altitude;
@@ -173,7 +169,7 @@ BoundedRateMission make_bounded_rate_mission(std::uint64_t seed, const BoundedRa
     long double slowest = std::min(std::fabs(truth.vx.at(times[k])), std::fabs(truth.vx.at(times[k + 1])));
     for (std::size_t i = 0; i < truth.vx.t.size(); ++i)
       if (truth.vx.t[i] > times[k] && truth.vx.t[i] < times[k + 1]) slowest = std::min(slowest, std::fabs(truth.vx.x[i]));
-    altitude_rate[k] = slowest * (1.0L + slope) * kInside;
+    altitude_rate[k] = slowest * (1.0L + slope) * kStrictlyInside;
   }
   truth.altitude = make_track(times, altitude_rate, {10.0L, 5.0L, 15.0L}, side_altitude, rng);
 
@@ -185,7 +181,7 @@ BoundedRateMission make_bounded_rate_mission(std::uint64_t seed, const BoundedRa
   // Readings: the truth at an end of its sample box (or inside it for side 0).
   const auto constant = [](double b) { return [b](long double) { return static_cast<long double>(b); }; };
   const auto dvl = [&](long double r) { return model.dvl_relative * std::fabs(r) + model.dvl_absolute; };
-  const auto inside = [&](int side) { return side == 0 ? uniform(rng, -1.0L, 1.0L) * kInside : kInside; };
+  const auto inside = [&](int side) { return side == 0 ? uniform(rng, -1.0L, 1.0L) * kStrictlyInside : kStrictlyInside; };
   const auto read = [&](const Track& track, const std::vector<int>& sides, std::size_t k, auto bound) {
     const int side = sides[k] == 0 ? 1 : sides[k];
     return reading_for(track.at(times[k]), side, inside(sides[k]), bound);

@@ -11,8 +11,10 @@
 
 namespace gesmi::test {
 
-/// The largest finite double, and pi to long double precision, for expected bounds.
+/// The largest and the smallest positive doubles, and pi to long double precision, for
+/// expected bounds.
 inline constexpr double kMax = std::numeric_limits<double>::max();
+inline constexpr double kTiny = std::numeric_limits<double>::denorm_min();
 inline constexpr long double kPiLong = std::numbers::pi_v<long double>;
 
 /// Whether x holds a value computed in long double (compared exactly, not rounded to double).

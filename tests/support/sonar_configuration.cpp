@@ -4,15 +4,11 @@
 #include <numbers>
 
 #include "tests/support/rotation_long_double.h"
+#include "tests/support/random_draws.h"
 
 namespace gesmi::test {
 namespace {
 
-constexpr long double kInside = 1.0L - 1e-9L;
-
-long double uniform(std::mt19937_64& rng, long double lo, long double hi) {
-  return lo + (hi - lo) * static_cast<long double>(rng() >> 11) * 0x1p-53L;
-}
 
 void body_vector(const SonarConfiguration& c, long double eb[3], long double e[3]) {
   const RotationLd r(c.roll, c.pitch, c.heading);
@@ -23,7 +19,7 @@ void body_vector(const SonarConfiguration& c, long double eb[3], long double e[3
 }  // namespace
 
 long double adversarial(std::mt19937_64& rng, long double lo, long double hi) {
-  const long double mid = 0.5L * (lo + hi), half = 0.5L * (hi - lo) * kInside;
+  const long double mid = 0.5L * (lo + hi), half = 0.5L * (hi - lo) * kStrictlyInside;
   switch (rng() % 3) {
     case 0: return mid - half;
     case 1: return mid + half;
@@ -53,7 +49,7 @@ SonarConfiguration random_sonar_configuration(std::mt19937_64& rng, const Sensor
     const long double tol = model.along_track_tolerance;
     long double range;
     switch (rng() % 5) {
-      case 0: range = max_range * kInside; break;
+      case 0: range = max_range * kStrictlyInside; break;
       case 1: range = uniform(rng, 1e-3L, 2.0L); break;
       default: range = uniform(rng, 1.0L, max_range);
     }

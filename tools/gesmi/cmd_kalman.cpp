@@ -26,8 +26,6 @@ namespace {
 namespace po = boost::program_options;
 using Clock = std::chrono::steady_clock;
 
-double elapsed_ms(Clock::time_point since) { return std::chrono::duration<double, std::milli>(Clock::now() - since).count(); }
-
 void add_kalman_options(po::options_description& options) {
   options.add_options()
       ("mission", po::value<std::string>()->required(), "mission file (HDF5)")

@@ -30,8 +30,6 @@ namespace {
 namespace po = boost::program_options;
 using Clock = std::chrono::steady_clock;
 
-double elapsed_ms(Clock::time_point since) { return std::chrono::duration<double, std::milli>(Clock::now() - since).count(); }
-
 int run_solve(std::span<const std::string> args) {
   po::variables_map v;
   if (!parse_options(args, solve_options(), po::positional_options_description().add("mission", 1), v, kSolveUsage))

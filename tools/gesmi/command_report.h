@@ -6,6 +6,7 @@
 // a command that fails on bad input (exit 2) prints no report.
 
 #include <boost/program_options.hpp>
+#include <chrono>
 #include <initializer_list>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -13,6 +14,11 @@
 #include <vector>
 
 namespace gesmi::cli {
+
+/// Milliseconds of wall time since `since`, for the reports' timings.
+inline double elapsed_ms(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
+}
 
 inline constexpr int kReportSchemaVersion = 1;
 

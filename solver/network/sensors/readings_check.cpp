@@ -21,7 +21,7 @@ namespace {
 // a short burst shows, to 1.6 s, where the readings' noise weighs 256 times less.
 constexpr std::size_t kSpans[] = {1, 4, 16};
 constexpr std::size_t kWidestSpan = 16;
-constexpr std::size_t kBlock = 2048;
+constexpr std::size_t kStepsPerBlock = 2048;
 
 Interval component(const WorldVelocityBoxes& w, int i, std::size_t j) {
   return Interval::from_bounds(-w.neg_lo[i][j], w.hi[i][j]);
@@ -192,8 +192,8 @@ void gather_blocks(Gather& g) {
   BlockMidpoints b;
   std::vector<std::size_t> candidates;
   std::vector<double> scratch[4];
-  for (std::size_t start = 0; start < n; start += kBlock) {
-    const std::size_t end = std::min(n, start + kBlock);
+  for (std::size_t start = 0; start < n; start += kStepsPerBlock) {
+    const std::size_t end = std::min(n, start + kStepsPerBlock);
     const std::size_t first = start >= kWidestSpan ? start - kWidestSpan : 0;
     const std::size_t last = std::min(n, end + kWidestSpan);
     world_boxes(g.m, g.model, first, last, w);

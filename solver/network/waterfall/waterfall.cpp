@@ -80,14 +80,14 @@ class WaterfallCells {
   // pairs at once, what it leaves on SonarPlane.
   void compute_rows(std::size_t chunk, std::size_t first, std::size_t last,
                     const std::function<void(double)>& on_progress, Waterfall& part) const {
-    constexpr std::size_t kBlock = 512;
+    constexpr std::size_t kRowsPerBlock = 512;
     BlockBuffers buffers;
     std::size_t earlier = any_kept_ ? before_->waterfall.first_cell_at(first) : 0;
-    for (std::size_t block = first; block < last; block += kBlock) {
+    for (std::size_t block = first; block < last; block += kRowsPerBlock) {
       // The first chunk runs on the calling thread: it reports for all (they keep pace).
       if (chunk == 0 && on_progress && (block - first) % 8192 == 0)
         on_progress(static_cast<double>(block - first) / static_cast<double>(last - first));
-      const std::size_t block_end = std::min(last, block + kBlock);
+      const std::size_t block_end = std::min(last, block + kRowsPerBlock);
       compute_block(block, block_end, earlier, buffers);
       for (std::size_t k = block; k < block_end; ++k)
         for (std::size_t i = 0; i < mines_; ++i) {

@@ -17,15 +17,15 @@
 namespace gesmi::io {
 namespace {
 
-struct Case {
+struct BoxCase {
   GeoOrigin origin;
   double north, east, size;  // box centre (m) and side (m)
 };
 
-class GeodeticBoxTest : public ::testing::TestWithParam<Case> {};
+class GeodeticBoxTest : public ::testing::TestWithParam<BoxCase> {};
 
 TEST_P(GeodeticBoxTest, ContainsEverySampledPointAndStaysTight) {
-  const Case c = GetParam();
+  const BoxCase c = GetParam();
   const LocalFrame frame(c.origin);
   const Interval north(c.north - c.size / 2, c.north + c.size / 2 * 0.7);
   const Interval east(c.east - c.size / 2 * 0.8, c.east + c.size / 2);
@@ -42,11 +42,11 @@ TEST_P(GeodeticBoxTest, ContainsEverySampledPointAndStaysTight) {
 
 INSTANTIATE_TEST_SUITE_P(
     LatitudesDistancesSizes, GeodeticBoxTest,
-    ::testing::Values(Case{{48.2129, -4.4582}, 500, 300, 20}, Case{{48.2129, -4.4582}, 90000, 10000, 3000},
-                      Case{{0.0, 10.0}, -60000, 60000, 20000}, Case{{70.0, 20.0}, 80000, -40000, 20000},
-                      Case{{84.0, -150.0}, 20000, 85000, 20000}, Case{{-84.0, 179.99}, -90000, 1000, 5000},
-                      Case{{84.9, 0.0}, 0, 0, 40000}, Case{{85.0, 30.0}, 470000, 0, 40000},
-                      Case{{-85.0, 30.0}, -470000, 20000, 30000}));
+    ::testing::Values(BoxCase{{48.2129, -4.4582}, 500, 300, 20}, BoxCase{{48.2129, -4.4582}, 90000, 10000, 3000},
+                      BoxCase{{0.0, 10.0}, -60000, 60000, 20000}, BoxCase{{70.0, 20.0}, 80000, -40000, 20000},
+                      BoxCase{{84.0, -150.0}, 20000, 85000, 20000}, BoxCase{{-84.0, 179.99}, -90000, 1000, 5000},
+                      BoxCase{{84.9, 0.0}, 0, 0, 40000}, BoxCase{{85.0, 30.0}, 470000, 0, 40000},
+                      BoxCase{{-85.0, 30.0}, -470000, 20000, 30000}));
 
 TEST(GeodeticExportRadius, BoxesFartherThanTheRadiusAreNotConverted) {
   EXPECT_TRUE(within_export_radius(Interval(-1000, 1000), Interval(499000, 499500)));

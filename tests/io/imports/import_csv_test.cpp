@@ -34,11 +34,11 @@ GpsLog gps(const std::string& text) {
   return read_gps_csv(in, "gps.csv", 0.0, 100.0);
 }
 
-// The error of `read`, checked to be one line starting with the file name.
-template <class Read>
-std::string error_of(Read read) {
+// The error of `reading`, checked to be one line starting with the file name.
+template <class Reading>
+std::string error_of(Reading reading) {
   try {
-    read();
+    reading();
   } catch (const FormatError& e) {
     const std::string what = e.what();
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;

@@ -21,7 +21,7 @@ namespace {
 using test::contains;
 
 using test::kMax;
-constexpr double kTiny = std::numeric_limits<double>::denorm_min();
+using test::kTiny;
 using test::kPiLong;
 
 // f's value v (long double, error far below a double ulp) lies in y, up to a

@@ -18,6 +18,7 @@
 #include <string>
 
 #include "tests/support/sonar_configuration.h"
+#include "tests/support/expect_interval.h"
 
 namespace gesmi {
 namespace {
@@ -28,12 +29,6 @@ Interval box_around(std::mt19937_64& rng, double x, const double* widths, std::s
   if (std::isinf(w)) return Interval::entire();
   const double u = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
   return Interval(sub_down(x, w * u), add_up(x, w * (1.0 - u)));
-}
-
-std::string text(const Interval& x) {
-  char b[80];
-  std::snprintf(b, sizeof b, "[%.17g, %.17g]", x.lo(), x.hi());
-  return b;
 }
 
 TEST(DetectionSoundness, TheTrueConfigurationSurvivesContraction) {
@@ -78,8 +73,8 @@ TEST(DetectionSoundness, TheTrueConfigurationSurvivesContraction) {
                     c.m[2], ok);
       first = b;
       for (int i = 0; i < 3; ++i)
-        first += "\n  q" + std::to_string(i) + " " + text(q0[i]) + " -> " + text(q[i]) + ", m" + std::to_string(i) +
-                 " " + text(m0[i]) + " -> " + text(m[i]);
+        first += "\n  q" + std::to_string(i) + " " + test::to_string(q0[i]) + " -> " + test::to_string(q[i]) + ", m" + std::to_string(i) +
+                 " " + test::to_string(m0[i]) + " -> " + test::to_string(m[i]);
     }
     bool moved = false;
     for (int i = 0; i < 3; ++i) moved = moved || !(q[i] == q0[i]) || !(m[i] == m0[i]);

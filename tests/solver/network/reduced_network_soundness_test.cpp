@@ -19,6 +19,7 @@
 #include "solver/network/mission_solver.h"
 #include "solver/sim/simulator.h"
 #include "tests/support/tiny_mission.h"
+#include "tests/support/expect_interval.h"
 
 namespace gesmi {
 namespace {
@@ -89,12 +90,6 @@ std::vector<SoundnessCase> variants(const SoundnessCase& base) {
   return out;
 }
 
-std::string text(const Interval& x) {
-  char b[80];
-  std::snprintf(b, sizeof b, "[%.17g, %.17g]", x.lo(), x.hi());
-  return b;
-}
-
 // Both solves round outward, each in its own order (the full chain adds the
 // increments one step at a time, the reduced one adds their sum), so the reduced
 // domain encloses the full one up to the rounding the full chain accumulated:
@@ -147,8 +142,8 @@ TEST(ReducedNetworkSoundness, EnclosesTheFullSolutionAndTheTruthAndNeverProvesAC
         for (int axis = 0; axis < 3; ++axis)
           if (!encloses_up_to_rounding(rd.position(i)[axis], full.position(k)[axis]))
             fail(c.name + ": event " + std::to_string(i) + " (sample " + std::to_string(k) + "), axis " +
-                 std::to_string(axis) + ": the reduced domain " + text(rd.position(i)[axis]) +
-                 " does not enclose the full one " + text(full.position(k)[axis]));
+                 std::to_string(axis) + ": the reduced domain " + test::to_string(rd.position(i)[axis]) +
+                 " does not enclose the full one " + test::to_string(full.position(k)[axis]));
         if (c.truthful && m.has_truth()) {
           const double truth[3] = {m.truth_x[k], m.truth_y[k], m.truth_z[k]};
           for (int axis = 0; axis < 3; ++axis)

@@ -10,6 +10,7 @@
 
 #include "solver/interval/box.h"
 #include "solver/setinv/datum_tests.h"
+#include "solver/setinv/paving.h"
 
 namespace gesmi::test {
 
@@ -49,6 +50,13 @@ inline std::vector<std::size_t> gaussian_phi(double p1, double p2) {
 /// Whether the point (x, y) lies in the first two components of the box.
 inline bool point_in(std::span<const Interval> box, double x, double y) {
   return box[0].contains(x) && box[1].contains(y);
+}
+
+/// Whether the point (x, y) lies in a box of the paving.
+inline bool in_paving(const Paving& paving, double x, double y) {
+  for (std::size_t i = 0; i < paving.size(); ++i)
+    if (point_in(paving.box(i), x, y)) return true;
+  return false;
 }
 
 }  // namespace gesmi::test

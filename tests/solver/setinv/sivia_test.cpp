@@ -12,6 +12,7 @@
 
 #include "solver/ctc/ctc_fwd_bwd.h"
 #include "solver/setinv/invert.h"
+#include "tests/solver/setinv/gaussian_example.h"
 
 namespace gesmi {
 namespace {
@@ -27,12 +28,6 @@ struct DiskMinusEllipse {
 };
 const Box kAppendixPrior{Interval(-2.5, 2.5), Interval(-2.0, 2.0)};
 const Box kNonPositive{Interval::neg_reals(), Interval::neg_reals()};
-
-bool in_paving(const Paving& paving, double x, double y) {
-  for (std::size_t i = 0; i < paving.size(); ++i)
-    if (paving.box(i)[0].contains(x) && paving.box(i)[1].contains(y)) return true;
-  return false;
-}
 
 TEST(Sivia, AppendixExampleBracketsTheAreaAndTheBoundaryShrinksWithEpsilon) {
   const double area = std::numbers::pi - std::numbers::pi / std::sqrt(2.0);
@@ -61,9 +56,9 @@ TEST(Sivia, EveryPointOfTheSetIsEnclosedAndInnerPointsSatisfyTheConstraints) {
     const double x = ux(rng), y = uy(rng);
     const bool in_set = x * x + y * y <= 1.0 && 2 * x * x + y * y >= 1.0;
     if (in_set) {
-      EXPECT_TRUE(in_paving(r.inner, x, y) || in_paving(r.boundary, x, y)) << x << " " << y;
+      EXPECT_TRUE(test::in_paving(r.inner, x, y) || test::in_paving(r.boundary, x, y)) << x << " " << y;
     }
-    if (in_paving(r.inner, x, y)) {
+    if (test::in_paving(r.inner, x, y)) {
       EXPECT_TRUE(in_set) << x << " " << y;
     }
   }
@@ -189,7 +184,7 @@ TEST(Sivia, GenericApiInvertsAParameterEstimationModel) {
   SiviaOptions options;
   options.epsilon = 0.005;
   const SiviaResult r = invert(model, image, prior, options);
-  EXPECT_TRUE(in_paving(r.inner, a, b) || in_paving(r.boundary, a, b));
+  EXPECT_TRUE(test::in_paving(r.inner, a, b) || test::in_paving(r.boundary, a, b));
   EXPECT_GT(r.inner.size(), 0u);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> ua(0.0, 5.0), ub(0.0, 3.0);
@@ -200,9 +195,9 @@ TEST(Sivia, GenericApiInvertsAParameterEstimationModel) {
     for (std::size_t k = 0; k < model.times.size(); ++k) ok = ok && image[k].contains(pa * std::exp(-pb * model.times[k]));
     consistent += ok;
     if (ok) {
-      EXPECT_TRUE(in_paving(r.inner, pa, pb) || in_paving(r.boundary, pa, pb));
+      EXPECT_TRUE(test::in_paving(r.inner, pa, pb) || test::in_paving(r.boundary, pa, pb));
     } else {
-      EXPECT_FALSE(in_paving(r.inner, pa, pb));
+      EXPECT_FALSE(test::in_paving(r.inner, pa, pb));
     }
   }
   EXPECT_GT(consistent, 10);
@@ -228,7 +223,7 @@ TEST(Sivia, EpsilonBelowTheSpacingOfDoublesEndsAtUnsplittableBoxes) {
   const SiviaResult r = sivia(test, Box{Interval(-1, 1), Interval(-1, 1)}, options);
   EXPECT_GE(r.report.boxes_unsplittable, 1u);
   EXPECT_TRUE(r.inner.empty());
-  EXPECT_TRUE(in_paving(r.boundary, test.x, test.y));
+  EXPECT_TRUE(test::in_paving(r.boundary, test.x, test.y));
   EXPECT_EQ(r.report.boxes_at_epsilon, 0u);
   EXPECT_GE(r.report.max_depth, 2 * 54);
   EXPECT_LE(r.report.max_depth, 2 * 56);

@@ -24,15 +24,14 @@
 #include "solver/network/sensors/sensor_boxes.h"
 #include "tests/support/rotation_long_double.h"
 #include "tests/support/sonar_configuration.h"
+#include "tests/support/random_draws.h"
 
 namespace gesmi {
 namespace {
 
 using test::adversarial;
 
-long double uniform(std::mt19937_64& rng, long double lo, long double hi) {
-  return lo + (hi - lo) * static_cast<long double>(rng() >> 11) * 0x1p-53L;
-}
+using test::uniform;
 // A double of [x.lo, x.hi], its ends a third of the time each.
 double point_of(std::mt19937_64& rng, const Interval& x) {
   switch (rng() % 3) {

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "tests/solver/setinv/gaussian_example.h"
+#include "solver/model/angles.h"
 
 namespace gesmi {
 namespace {
@@ -32,12 +33,6 @@ struct PartitionedExample2 {
     partition = partition_by_outlier_set(refined);
   }
 };
-
-bool in_paving(const Paving& p, double x, double y) {
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (test::point_in(p.box(i), x, y)) return true;
-  return false;
-}
 
 TEST(OutlierSetPavings, InnerBoxesOfASetHaveExactlyThatPhi) {
   const PartitionedExample2 e;
@@ -67,8 +62,8 @@ TEST(OutlierSetPavings, EveryPointOfS2LiesInThePavingOfItsSet) {
       on_grid.insert(phi);
       const auto it = std::find_if(e.partition.sets.begin(), e.partition.sets.end(),
                                    [&](const OutlierSetPaving& s) { return s.outliers == phi; });
-      const bool found = (it != e.partition.sets.end() && (in_paving(it->inner, p1, p2) || in_paving(it->boundary, p1, p2))) ||
-                         in_paving(e.partition.unresolved, p1, p2);
+      const bool found = (it != e.partition.sets.end() && (test::in_paving(it->inner, p1, p2) || test::in_paving(it->boundary, p1, p2))) ||
+                         test::in_paving(e.partition.unresolved, p1, p2);
       EXPECT_TRUE(found) << p1 << " " << p2;
     }
   // The exactly-2 sets are those of the grid (seed 004's j^{-1}(2)); each is proved
@@ -107,7 +102,6 @@ TEST(OutlierSetPavings, TheUnionOfThePartitionIsTheRefinedEnclosure) {
 TEST(OutlierSetPavings, HullOfASetAcrossThePeriodIsTheShortArc) {
   // Two boxes of the set {0} (datum 0 certainly fails, datum 1 certainly holds), one
   // ending at 2 pi and one starting at 0: on the circle they are the arc [-0.1, 0.1].
-  constexpr double kTwoPi = 2.0 * std::numbers::pi;
   OutlierPaving refined;
   refined.inner = refined.boundary = Paving(3);
   refined.inner.add(Box{Interval(0.0, 1.0), Interval(2.0, 3.0), Interval(kTwoPi - 0.1, kTwoPi)});
