@@ -42,24 +42,28 @@ std::string limit_text(const EstimationLevel& level) {
 
 std::string estimation_summary(const EstimationProblem& p, const EstimationResult& r) {
   std::string s = formatted("scenario %s: Gaussian density, %zu interval data, epsilon %g\n",
-                         p.name.empty() ? "(unnamed)" : p.name.c_str(), p.t.size(), p.epsilon);
+                            p.name.empty() ? "(unnamed)" : p.name.c_str(), p.t.size(), p.epsilon);
   for (const EstimationLevel& level : r.levels) {
     std::size_t unproved = 0;
     for (const OutlierSetPaving& set : level.sets) unproved += set.inner.empty();
-    s += formatted("q = %d: %zu outlier sets of exactly %d data proved (inner boxes)", level.q, level.sets.size() - unproved, level.q);
+    s += formatted("q = %d: %zu outlier sets of exactly %d data proved (inner boxes)", level.q,
+                   level.sets.size() - unproved, level.q);
     s += unproved ? formatted(", %zu more fit boundary boxes only", unproved) : std::string();
-    s += level.unresolved.empty() ? std::string() : formatted(", %zu boxes fit too many sets to list", level.unresolved.size());
+    s += level.unresolved.empty() ? std::string()
+                                  : formatted(", %zu boxes fit too many sets to list", level.unresolved.size());
     s += formatted("; %zu boxes examined, %.3f s%s\n", level.boxes_examined, level.seconds, limit_text(level).c_str());
     for (const OutlierSetPaving& set : level.sets)
       if (!set.inner.empty())
-        s += formatted("  outliers %-14s p1 [%.4f, %.4f]  p2 [%.4f, %.4f]  inner %zu (area %.5g), boundary %zu (area %.5g)\n",
-                    set_text(set.outliers).c_str(), set.hull[0].lo(), set.hull[0].hi(), set.hull[1].lo(), set.hull[1].hi(),
-                    set.inner.size(), set.inner_volume(), set.boundary.size(), set.outer_volume() - set.inner_volume());
+        s += formatted(
+            "  outliers %-14s p1 [%.4f, %.4f]  p2 [%.4f, %.4f]  inner %zu (area %.5g), boundary %zu (area %.5g)\n",
+            set_text(set.outliers).c_str(), set.hull[0].lo(), set.hull[0].hi(), set.hull[1].lo(), set.hull[1].hi(),
+            set.inner.size(), set.inner_volume(), set.boundary.size(), set.outer_volume() - set.inner_volume());
   }
   if (r.box_limit_hit())
     s += formatted("WARNING: the box limit (solver.max_boxes: %zu) was hit: ", p.max_boxes) + kLimitConsequence;
   if (r.time_limit_hit())
-    s += "WARNING: the time limit (solver.max_seconds: " + format_number(p.max_seconds) + " s) was hit: " + kLimitConsequence;
+    s += "WARNING: the time limit (solver.max_seconds: " + format_number(p.max_seconds) +
+         " s) was hit: " + kLimitConsequence;
   s += formatted("%zu boxes examined, %.3f s in all\n", r.boxes_examined(), r.seconds);
   return s;
 }

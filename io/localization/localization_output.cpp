@@ -53,8 +53,8 @@ std::string safety_lines(const LocalizationProblem& p, const LocalizationResult&
   if (r.safety.empty()) return {};
   std::string s = "safety of each datum (Remark 6 of seed 004: vol S / vol S without the datum):\n";
   for (std::size_t i = 0; i < r.safety.size(); ++i)
-    s += formatted("  %-16s [%.4f, %.4f]%s\n", datum_name(p, i).c_str(), r.safety[i].safety.lo(), r.safety[i].safety.hi(),
-                r.safety[i].limit_hit ? "  (a limit was hit)" : "");
+    s += formatted("  %-16s [%.4f, %.4f]%s\n", datum_name(p, i).c_str(), r.safety[i].safety.lo(),
+                   r.safety[i].safety.hi(), r.safety[i].limit_hit ? "  (a limit was hit)" : "");
   return s;
 }
 
@@ -82,14 +82,15 @@ std::string interval_text(const Interval& x, double unit) {
 
 std::string localization_summary(const LocalizationProblem& p, const LocalizationResult& r) {
   std::string s = formatted("scenario %s: %zu range and %zu bearing measurements, %zu walls, %zu landmarks\n",
-                         p.name.empty() ? "(unnamed)" : p.name.c_str(), p.ranges.size(), p.bearings.size(),
-                         p.map.walls.size(), p.map.landmarks.size());
+                            p.name.empty() ? "(unnamed)" : p.name.c_str(), p.ranges.size(), p.bearings.size(),
+                            p.map.walls.size(), p.map.landmarks.size());
   if (r.gomne) {
     const GomneResult& g = *r.gomne;
-    s += formatted("policy: minimal number of outliers (GOMNE), epsilon0 %g, epsilon_min %g\n", p.epsilon, p.epsilon_min);
+    s += formatted("policy: minimal number of outliers (GOMNE), epsilon0 %g, epsilon_min %g\n", p.epsilon,
+                   p.epsilon_min);
     for (const GomneStep& step : g.steps)
       s += formatted("  SIVIA(q=%d) epsilon %-9g inner %8zu  boundary %8zu  boxes examined %10zu  %.3f s\n", step.q,
-                  step.epsilon, step.inner_boxes, step.boundary_boxes, step.boxes_visited, step.seconds);
+                     step.epsilon, step.inner_boxes, step.boundary_boxes, step.boxes_visited, step.seconds);
     if (!g.found)
       s += "no consistent pose found for any number of outliers tried\n";
     else if (g.exact() && g.q_star == 0)
@@ -97,38 +98,44 @@ std::string localization_summary(const LocalizationProblem& p, const Localizatio
     else if (g.exact())
       s += formatted("minimal number of outliers q* = %d (every q < %d proved impossible)\n", g.q_star, g.q_star);
     else
-      s += formatted("number of outliers between %d and %d (epsilon_min reached: outer enclosure only)\n", g.q_lower, g.q_star);
-    if (g.q_used != g.q_star && g.found) s += formatted("paving characterises S_%d (extra margin of %d outliers)\n", g.q_used, p.extra_outliers);
+      s += formatted("number of outliers between %d and %d (epsilon_min reached: outer enclosure only)\n", g.q_lower,
+                     g.q_star);
+    if (g.q_used != g.q_star && g.found)
+      s += formatted("paving characterises S_%d (extra margin of %d outliers)\n", g.q_used, p.extra_outliers);
   } else {
     s += formatted("policy: fixed, up to %d outliers allowed; epsilon %g; %zu boxes examined\n", p.outliers, p.epsilon,
-                r.paving.report.boxes_visited);
+                   r.paving.report.boxes_visited);
   }
   const SiviaReport& rep = r.paving.report;
   s += formatted("paving: %zu inner boxes (volume %.6g), %zu boundary boxes (volume %.6g); %.3f s in all\n",
-              r.paving.inner.size(), r.paving.inner.volume(), r.paving.boundary.size(), r.paving.boundary.volume(), r.seconds);
+                 r.paving.inner.size(), r.paving.inner.volume(), r.paving.boundary.size(), r.paving.boundary.volume(),
+                 r.seconds);
   if (r.limit_hit())
-    s += formatted("WARNING: a limit was hit (solver.max_boxes: %zu boxes, solver.max_seconds: %s s): undetermined boxes "
-                "were kept unbisected (still an enclosure); raise them in the scenario's solver section to bisect "
-                "further\n",
-                p.max_boxes, format_number(p.max_seconds).c_str());
+    s += formatted(
+        "WARNING: a limit was hit (solver.max_boxes: %zu boxes, solver.max_seconds: %s s): undetermined boxes "
+        "were kept unbisected (still an enclosure); raise them in the scenario's solver section to bisect "
+        "further\n",
+        p.max_boxes, format_number(p.max_seconds).c_str());
   if (rep.boxes_unsplittable > 0)
-    s += formatted("NOTE: %zu undetermined boxes were too narrow for doubles to bisect (epsilon is below the spacing of "
-                "doubles there): kept as boundary boxes\n", rep.boxes_unsplittable);
+    s += formatted(
+        "NOTE: %zu undetermined boxes were too narrow for doubles to bisect (epsilon is below the spacing of "
+        "doubles there): kept as boundary boxes\n",
+        rep.boxes_unsplittable);
   s += formatted("hypotheses (connected components): %zu\n", r.hypotheses.size());
   for (std::size_t k = 0; k < r.hypotheses.size(); ++k) {
     const LocalizationHypothesis& h = r.hypotheses[k];
     const Box& b = h.component.hull;
     s += formatted("  #%zu x %s  y %s  theta %s deg  (%zu inner, %zu boundary boxes)%s\n", k + 1,
-                interval_text(b[0], 1).c_str(), interval_text(b[1], 1).c_str(),
-                interval_text(b[2], kDegreesPerRadian).c_str(), h.component.inner.size(), h.component.boundary.size(),
-                h.contains_truth ? "  <- holds the true pose" : "");
+                   interval_text(b[0], 1).c_str(), interval_text(b[1], 1).c_str(),
+                   interval_text(b[2], kDegreesPerRadian).c_str(), h.component.inner.size(),
+                   h.component.boundary.size(), h.contains_truth ? "  <- holds the true pose" : "");
     s += outlier_lines(p, h);
     s += "     associations: " + association_text(p, h) + "\n";
   }
   s += safety_lines(p, r);
   if (p.truth)
     s += formatted("true pose (%.4f, %.4f, %.3f deg) %s\n", p.truth->x, p.truth->y, p.truth->theta * kDegreesPerRadian,
-                r.truth_enclosed ? "is enclosed" : "is NOT enclosed");
+                   r.truth_enclosed ? "is enclosed" : "is NOT enclosed");
   return s;
 }
 
@@ -137,7 +144,8 @@ std::string paving_csv(const Paving& paving, const std::vector<int>& component_o
   for (std::size_t i = 0; i < paving.size(); ++i) {
     const auto b = paving.box(i);
     s += std::to_string(component_of_box[i]);
-    for (int d = 0; d < 3; ++d) s += "," + format_number(b[d].lo()) + "," + format_number(b[d].hi());  // exact, shortest
+    for (int d = 0; d < 3; ++d)
+      s += "," + format_number(b[d].lo()) + "," + format_number(b[d].hi());  // exact, shortest
     s += "\n";
   }
   return s;
@@ -153,8 +161,8 @@ std::string components_csv(const LocalizationProblem& p, const LocalizationResul
     s += formatted("%zu,%zu,%zu", k + 1, h.component.inner.size(), h.component.boundary.size());
     for (int d = 0; d < 3; ++d) s += "," + format_number(b[d].lo()) + "," + format_number(b[d].hi());
     s += "," + format_number(h.component.inner_volume) + "," + format_number(h.component.boundary_volume) + ",";
-    s += "\"" + names(p, h.outliers.outliers) + "\"," + (h.outliers.determined ? "1" : "0") + ",\"" + association_text(p, h) + "\"," +
-         (h.contains_truth ? "1" : "0") + "\n";
+    s += "\"" + names(p, h.outliers.outliers) + "\"," + (h.outliers.determined ? "1" : "0") + ",\"" +
+         association_text(p, h) + "\"," + (h.contains_truth ? "1" : "0") + "\n";
   }
   return s;
 }

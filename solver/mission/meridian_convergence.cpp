@@ -1,10 +1,11 @@
 #include "solver/mission/meridian_convergence.h"
-#include "solver/model/angles.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+
+#include "solver/model/angles.h"
 
 namespace gesmi {
 namespace {

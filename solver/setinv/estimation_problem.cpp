@@ -13,8 +13,6 @@
 namespace gesmi {
 namespace {
 
-double square(double x) { return x * x; }
-Interval square(const Interval& x) { return sqr(x); }  // tighter than x * x when x holds 0
 
 struct GaussianDensity {
   std::vector<double> t;
@@ -22,7 +20,7 @@ struct GaussianDensity {
   template <class T>
   void operator()(std::span<const T> p, std::span<T> y) const {
     for (std::size_t i = 0; i < t.size(); ++i)
-      y[i] = exp(-square(T(t[i]) - p[0]) / (T(2.0) * p[1])) / sqrt(T(2.0 * std::numbers::pi) * p[1]);
+      y[i] = exp(-sqr(T(t[i]) - p[0]) / (T(2.0) * p[1])) / sqrt(T(2.0 * std::numbers::pi) * p[1]);
   }
 };
 
@@ -93,7 +91,7 @@ std::string EstimationProblem::validate() const {
 
 double model_output(const EstimationProblem& problem, std::size_t i, std::span<const double> p) {
   const double t = problem.t[i];
-  return std::exp(-square(t - p[0]) / (2.0 * p[1])) / std::sqrt(2.0 * std::numbers::pi * p[1]);
+  return std::exp(-sqr(t - p[0]) / (2.0 * p[1])) / std::sqrt(2.0 * std::numbers::pi * p[1]);
 }
 
 EstimationResult estimate(const EstimationProblem& problem,

@@ -1,7 +1,8 @@
 #include "solver/sim/reading_errors.h"
-#include "solver/model/angles.h"
 
 #include <cmath>
+
+#include "solver/model/angles.h"
 
 namespace gesmi {
 namespace {

@@ -16,7 +16,6 @@
 #include "io/geodesy.h"
 #include "tests/support/geodetic_sampling.h"
 
-#include <GeographicLib/Geodesic.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>

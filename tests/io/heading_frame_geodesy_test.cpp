@@ -8,7 +8,6 @@
 
 #include <GeographicLib/Constants.hpp>
 #include <GeographicLib/Geocentric.hpp>
-#include <GeographicLib/Geodesic.hpp>
 
 #include <algorithm>
 #include <array>
@@ -32,8 +31,7 @@ namespace {
 // point (north, east): the frame direction of a 1 m geodesic step north.
 double convergence_at(const LocalFrame& frame, double north, double east) {
   const GeoOrigin p = frame.to_geodetic(north, east);
-  GeoOrigin q{};
-  GeographicLib::Geodesic::WGS84().Direct(p.latitude, p.longitude, 0.0, 1.0, q.latitude, q.longitude);
+  const GeoOrigin q = test::geodesic_destination(p, 0.0, 1.0);
   const NorthEast a = frame.to_local(p.latitude, p.longitude), b = frame.to_local(q.latitude, q.longitude);
   return std::atan2(b.east - a.east, b.north - a.north);
 }
@@ -43,8 +41,7 @@ double convergence_at(const LocalFrame& frame, double north, double east) {
 double scale_error_at(const LocalFrame& frame, double north, double east) {
   const GeoOrigin p = frame.to_geodetic(north, east);
   const double azimuth = std::atan2(east, north) * 180.0 / std::numbers::pi;
-  GeoOrigin q{};
-  GeographicLib::Geodesic::WGS84().Direct(p.latitude, p.longitude, azimuth, 10.0, q.latitude, q.longitude);
+  const GeoOrigin q = test::geodesic_destination(p, azimuth, 10.0);
   const NorthEast a = frame.to_local(p.latitude, p.longitude), b = frame.to_local(q.latitude, q.longitude);
   return 1.0 - std::hypot(b.east - a.east, b.north - a.north) / 10.0;
 }

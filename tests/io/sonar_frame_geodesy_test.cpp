@@ -8,7 +8,6 @@
 // distances the boxes allow (SonarPlane::possible_ranges), loses the truth where the
 // beam is radial.
 
-#include <GeographicLib/Geodesic.hpp>
 #include <GeographicLib/LocalCartesian.hpp>
 #include <gtest/gtest.h>
 
@@ -39,9 +38,7 @@ struct Scene {
 // across and 10 m below it.
 Scene scene(const GeoOrigin& origin, double azimuth, double distance, double beam) {
   const double depth = 20.0, across = 45.0, below = 10.0;
-  GeoOrigin robot{};
-  GeographicLib::Geodesic::WGS84().Direct(origin.latitude, origin.longitude, azimuth, distance, robot.latitude,
-                                          robot.longitude);
+  const GeoOrigin robot = test::geodesic_destination(origin, azimuth, distance);
   // The mine from the robot's own axes (east, north, up).
   const double b = beam * kRadiansPerDegree;
   const GeographicLib::LocalCartesian at_robot(robot.latitude, robot.longitude, -depth);

@@ -15,7 +15,6 @@
 namespace gesmi {
 namespace {
 
-
 /// Remark 4's test for a x + b y <= c on the position of a box.
 struct HalfPlanes {
   const std::vector<HalfPlane>& planes;
