@@ -41,22 +41,50 @@ void check(const LinearProgram& lp, std::span<const double> objective, std::span
 
 }  // namespace
 
-double certified_lower_bound(const LinearProgram& lp, std::span<const double> objective,
-                             std::span<const double> multipliers) {
-  check(lp, objective, multipliers);
-  // d = c - A^T lambda, each component enclosed.
-  std::vector<Interval> reduced(objective.begin(), objective.end());
-  double bound = 0.0;
+DualCertificate::DualCertificate(const LinearProgram& lp, std::span<const double> multipliers,
+                                 std::span<const std::size_t> varying)
+    : lp_(lp), varying_(varying.begin(), varying.end()) {
+  check(lp, std::vector<double>(lp.columns, 0.0), multipliers);
+  // d = c - A^T lambda, each component enclosed; c is zero outside the varying columns.
+  std::vector<Interval> reduced(lp.columns, Interval(0.0));
   for (std::size_t i = 0; i < lp.rows(); ++i) {
     const double lambda = usable_multiplier(multipliers[i], lp.row_lower[i], lp.row_upper[i]);
     if (lambda == 0.0) continue;
     for (std::size_t k = lp.row_start[i]; k < lp.row_start[i + 1]; ++k)
       reduced[lp.column[k]] = reduced[lp.column[k]] - Interval(lp.value[k]) * Interval(lambda);
-    bound = add_down(bound, (Interval(lambda) * Interval(lp.row_lower[i], lp.row_upper[i])).lo());
+    fixed_ = add_down(fixed_, (Interval(lambda) * Interval(lp.row_lower[i], lp.row_upper[i])).lo());
+  }
+  std::vector<bool> is_varying(lp.columns, false);
+  for (const std::size_t j : varying_) {
+    if (j >= lp.columns || is_varying[j])
+      throw std::invalid_argument("DualCertificate: a varying column is out of range or repeated");
+    is_varying[j] = true;
+    transposed_.push_back(reduced[j]);
   }
   for (std::size_t j = 0; j < lp.columns; ++j)
-    bound = add_down(bound, (reduced[j] * Interval(lp.column_lower[j], lp.column_upper[j])).lo());
+    if (!is_varying[j]) fixed_ = add_down(fixed_, (reduced[j] * Interval(lp.column_lower[j], lp.column_upper[j])).lo());
+}
+
+double DualCertificate::lower_bound(std::span<const double> objective) const {
+  if (objective.size() != varying_.size())
+    throw std::invalid_argument("DualCertificate: one coefficient per varying column");
+  double bound = fixed_;
+  for (std::size_t v = 0; v < varying_.size(); ++v) {
+    if (!std::isfinite(objective[v]))
+      throw std::invalid_argument("DualCertificate: an objective coefficient is not finite");
+    const std::size_t j = varying_[v];
+    bound = add_down(
+        bound, ((Interval(objective[v]) + transposed_[v]) * Interval(lp_.column_lower[j], lp_.column_upper[j])).lo());
+  }
   return bound;  // (terms are finite or -infinity: no NaN)
+}
+
+double certified_lower_bound(const LinearProgram& lp, std::span<const double> objective,
+                             std::span<const double> multipliers) {
+  check(lp, objective, multipliers);
+  std::vector<std::size_t> every(lp.columns);
+  for (std::size_t j = 0; j < lp.columns; ++j) every[j] = j;
+  return DualCertificate(lp, multipliers, every).lower_bound(objective);
 }
 
 bool certifies_empty(const LinearProgram& lp, std::span<const double> multipliers) {

@@ -10,11 +10,32 @@
 // A multiplier that would multiply an infinite row bound by its sign is taken as 0 (any
 // multipliers are valid, and that one would only give -infinity).
 
+#include <cstddef>
 #include <span>
+#include <vector>
 
+#include "solver/interval/interval.h"
 #include "solver/lp/linear_program.h"
 
 namespace gesmi {
+
+/// One set of multipliers prepared for many objectives that are zero outside the same
+/// few `varying` columns: the rows' terms and the other columns' terms are summed once,
+/// and each objective then costs a term per varying column (the structured relaxation
+/// bounds every sample of a segment with the multipliers of a nearby one). The program
+/// must outlive this object; it is checked as certified_lower_bound checks it.
+class DualCertificate {
+ public:
+  DualCertificate(const LinearProgram& lp, std::span<const double> multipliers, std::span<const std::size_t> varying);
+  /// A lower bound of objective . z, objective[v] the coefficient of column varying[v].
+  double lower_bound(std::span<const double> objective) const;
+
+ private:
+  const LinearProgram& lp_;
+  std::vector<std::size_t> varying_;
+  std::vector<Interval> transposed_;  // -(A^T lambda)_j of each varying column
+  double fixed_ = 0.0;                // the rows' and the other columns' terms, rounded down
+};
 
 /// A lower bound of objective . z over the feasible set of `lp` (-infinity when the
 /// multipliers leave it unbounded). std::invalid_argument when the program is malformed:
