@@ -1,10 +1,12 @@
 #include "solver/structured/structured_relaxation.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 #include "solver/lp/clp_program.h"
 #include "solver/lp/dual_certificate.h"
+#include "solver/network/mission_network.h"
 #include "solver/network/sensors/sensor_boxes.h"
 #include "solver/structured/affine_track.h"
 
@@ -13,57 +15,91 @@ namespace {
 
 using Form = AffineDisplacement;
 
-// The anchor samples (first, last, and the sample at or before each fix within the
-// navigation) and each one's box: the tube's, within every fix's box moved back by the
-// displacement from the sample to the fix.
+// The anchor samples (first, last, and the sample at or before each fix and each mark)
+// and each one's box: the tube's, within every fix's box moved back by the displacement
+// from the sample to the fix. A mark of mine i ties that mine to its anchor: M_i - P in
+// the displacement from the sample to the mark time minus the sonar's offset e = p - m.
+struct MarkTie {
+  std::size_t sample = 0;
+  std::size_t mine = 0;
+  std::array<Interval, 2> mine_minus_position;
+};
+
 struct Anchors {
   std::vector<std::size_t> sample;
   std::vector<std::array<Interval, 2>> box;
+  std::vector<MarkTie> marks;
+  std::size_t index_of(std::size_t k) const {
+    return static_cast<std::size_t>(std::lower_bound(sample.begin(), sample.end(), k) - sample.begin());
+  }
 };
 
-Anchors anchors_of(const Mission& m, const SensorBoxes& whole, const std::vector<Interval>& north,
-                   const std::vector<Interval>& east) {
-  std::vector<std::pair<std::size_t, std::array<Interval, 2>>> found = {{0, {north[0], east[0]}},
-                                                                        {m.size() - 1, {north.back(), east.back()}}};
-  for (std::size_t g = 0; g < m.gps_time.size(); ++g) {
-    const double t = m.gps_time[g];
-    if (t < m.time.front() || t > m.time.back()) continue;  // (an unused fix costs width only)
-    const auto k = static_cast<std::size_t>(std::upper_bound(m.time.begin(), m.time.end(), t) - m.time.begin()) - 1;
-    std::array<Interval, 2> fix = {Interval::around(m.gps_north[g], m.gps_north_halfwidth[g]),
-                                   Interval::around(m.gps_east[g], m.gps_east_halfwidth[g])};
-    if (t > m.time[k]) {
-      Vec3I forward, backward;
-      whole.offsets_between(k, Interval(t) - Interval(m.time[k]), Interval(m.time[k + 1]) - Interval(t), forward,
-                            backward);
-      fix = {fix[0] - forward[0], fix[1] - forward[1]};
-    }
-    found.push_back({k, {intersect(fix[0], north[k]), intersect(fix[1], east[k])}});
-  }
-  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  Anchors a;
-  for (const auto& [k, box] : found) {
-    if (!a.sample.empty() && a.sample.back() == k) {
-      a.box.back() = {intersect(a.box.back()[0], box[0]), intersect(a.box.back()[1], box[1])};
-    } else {
-      a.sample.push_back(k);
-      a.box.push_back(box);
-    }
-  }
-  return a;
+// e = p - m that the sonar plane allows for this detection, horizontally: the plane
+// contracted with the robot at the origin and the mine anywhere within reach.
+std::optional<std::array<Interval, 2>> sonar_offset(const Detection& d) {
+  const double reach = add_up(d.range.hi(), add_up(d.plane.frame_slack, 1.0));
+  Vec3I q(Interval(0.0), Interval(0.0), Interval(0.0));
+  Vec3I mine(Interval(-reach, reach), Interval(-reach, reach), Interval(-reach, reach));
+  Interval r = d.range;
+  if (!d.plane.contract(q, mine, r)) return std::nullopt;
+  return std::array<Interval, 2>{q[0] - mine[0], q[1] - mine[1]};
 }
 
-std::size_t position_column(std::size_t anchor, std::size_t axis) { return 2 * anchor + axis; }
+Anchors anchors_of(const MissionNetwork& net, const TubeDomains& tube) {
+  const std::size_t last = tube.size() - 1;
+  std::vector<std::pair<std::size_t, std::array<Interval, 2>>> found = {{0, {tube.px[0], tube.py[0]}},
+                                                                        {last, {tube.px[last], tube.py[last]}}};
+  const auto moved_back = [](const TimeLocation& at, const std::array<Interval, 2>& box) {
+    return at.on_grid ? box : std::array<Interval, 2>{box[0] - at.forward[0], box[1] - at.forward[1]};
+  };
+  for (const Anchor& a : net.anchors) {
+    const std::array<Interval, 2> fix = moved_back(a.at, {a.fix.box[0], a.fix.box[1]});
+    found.push_back({a.at.k, {intersect(fix[0], tube.px[a.at.k]), intersect(fix[1], tube.py[a.at.k])}});
+  }
+  Anchors out;
+  for (const Detection& d : net.detections) {
+    if (d.mine < 0) continue;  // (an unassociated mark left out costs width only)
+    const auto e = sonar_offset(d);
+    if (!e) continue;
+    const TimeLocation& at = d.at;
+    const std::array<Interval, 2> forward = moved_back(at, {Interval(0.0), Interval(0.0)});
+    out.marks.push_back({at.k, static_cast<std::size_t>(d.mine), {-forward[0] - (*e)[0], -forward[1] - (*e)[1]}});
+    found.push_back({at.k, {tube.px[at.k], tube.py[at.k]}});
+  }
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [k, box] : found) {
+    if (!out.sample.empty() && out.sample.back() == k) {
+      out.box.back() = {intersect(out.box.back()[0], box[0]), intersect(out.box.back()[1], box[1])};
+    } else {
+      out.sample.push_back(k);
+      out.box.push_back(box);
+    }
+  }
+  return out;
+}
 
-// The program: positions at the anchors and the biases; a row per run and axis,
-// P_i+1 - P_i - coefficient . z within value + rest.
-LinearProgram program_of(const Anchors& a, const std::vector<Form>& runs, const StructuredErrors& errors) {
+// Columns: the positions at the anchors (2 each), the mines (2 each), the biases.
+std::size_t position_column(std::size_t anchor, std::size_t axis) { return 2 * anchor + axis; }
+std::size_t mine_column(const Anchors& a, std::size_t mine, std::size_t axis) {
+  return 2 * a.sample.size() + 2 * mine + axis;
+}
+
+// The program: a row per run and axis, P_i+1 - P_i - coefficient . z within value + rest;
+// a row per mark and axis, M - P within its tie.
+LinearProgram program_of(const Anchors& a, const std::vector<Form>& runs, const TubeDomains& tube,
+                         const StructuredErrors& errors) {
   LinearProgram lp;
-  const std::size_t z0 = 2 * a.sample.size();
+  const std::size_t z0 = 2 * a.sample.size() + 2 * tube.mines.size();
   lp.columns = z0 + kBiasTerms;
   for (const auto& box : a.box)
     for (const Interval& x : box) {
       lp.column_lower.push_back(x.lo());
       lp.column_upper.push_back(x.hi());
+    }
+  for (const Vec3I& mine : tube.mines)
+    for (int axis = 0; axis < 2; ++axis) {
+      lp.column_lower.push_back(mine[axis].lo());
+      lp.column_upper.push_back(mine[axis].hi());
     }
   for (const double b : errors.bias_bound) {
     lp.column_lower.push_back(-b);
@@ -80,6 +116,10 @@ LinearProgram program_of(const Anchors& a, const std::vector<Form>& runs, const 
       const Interval bounds = Interval(runs[i].value[axis]) + runs[i].rest[axis];
       lp.add_row(columns, values, bounds.lo(), bounds.hi());
     }
+  for (const MarkTie& tie : a.marks)
+    for (std::size_t axis = 0; axis < 2; ++axis)
+      lp.add_row({mine_column(a, tie.mine, axis), position_column(a.index_of(tie.sample), axis)}, {1.0, -1.0},
+                 tie.mine_minus_position[axis].lo(), tie.mine_minus_position[axis].hi());
   return lp;
 }
 
@@ -131,24 +171,44 @@ bool proved_empty(ClpProgram& clp, const LinearProgram& lp) {
   return certifies_empty(lp, a.multipliers) || certifies_empty(lp, flipped);
 }
 
-std::array<Interval, kBiasTerms> bias_bounds(ClpProgram& clp, const LinearProgram& lp, StructuredBounds& out) {
-  std::array<Interval, kBiasTerms> bias;
-  const std::size_t z0 = lp.columns - kBiasTerms;
-  for (std::size_t t = 0; t < kBiasTerms; ++t) {
-    std::array<double, 2> side{};
-    for (const double sign : {1.0, -1.0}) {
-      std::vector<double> c(lp.columns, 0.0);
-      c[z0 + t] = sign;
-      const ClpProgram::Answer a = clp.minimize(c);
-      ++out.linear_programs;
-      const double lowest =
-          a.status == ClpProgram::Status::optimal ? certified_lower_bound(lp, c, a.multipliers) : -kInf;
-      side[sign > 0 ? 0 : 1] =
-          sign > 0 ? std::max(lowest, lp.column_lower[z0 + t]) : std::min(-lowest, lp.column_upper[z0 + t]);
-    }
-    bias[t] = Interval(side[0], side[1]);
+// The certified bounds of one column, within its own.
+Interval column_bounds(ClpProgram& clp, const LinearProgram& lp, std::size_t column, StructuredBounds& out) {
+  std::array<double, 2> side = {lp.column_lower[column], lp.column_upper[column]};
+  for (const double sign : {1.0, -1.0}) {
+    std::vector<double> c(lp.columns, 0.0);
+    c[column] = sign;
+    const ClpProgram::Answer a = clp.minimize(c);
+    ++out.linear_programs;
+    if (a.status != ClpProgram::Status::optimal) continue;
+    const double lowest = certified_lower_bound(lp, c, a.multipliers);
+    if (sign > 0)
+      side[0] = std::max(side[0], lowest);
+    else
+      side[1] = std::min(side[1], -lowest);
   }
-  return bias;
+  return Interval(side[0], side[1]);
+}
+
+// Every sample of run i, bounded from the anchor before and the one after.
+void bound_samples_of_run(ClpProgram& clp, const LinearProgram& lp, const Anchors& a, std::size_t i, StepSums& sums,
+                          const StructuredErrors& errors, const RelaxationOptions& options, StructuredBounds& out) {
+  const std::size_t first = a.sample[i], length = a.sample[i + 1] - first + 1;
+  std::vector<Form> forward(length), backward(length);
+  sums.clear();
+  for (std::size_t r = 1; r < length; ++r) {
+    sums.add_step(first + r - 1);
+    forward[r] = sums.form(errors.bias_bound);
+  }
+  sums.clear();
+  for (std::size_t r = length - 1; r-- > 0;) {
+    sums.add_step(first + r);
+    backward[r] = sums.form(errors.bias_bound);
+  }
+  for (std::size_t axis = 0; axis < 2; ++axis)
+    for (const double sign : {1.0, -1.0}) {
+      bound_run(clp, lp, {i, axis, sign, 1.0}, first, forward, options, out);
+      bound_run(clp, lp, {i + 1, axis, sign, -1.0}, first, backward, options, out);
+    }
 }
 
 }  // namespace
@@ -162,17 +222,17 @@ std::string structured_relaxation_refusal(const Mission& mission) {
 }
 
 StructuredBounds relax_structured(const Mission& m, const StepRegimes& regimes, const StructuredErrors& errors,
-                                  const std::vector<Interval>& north, const std::vector<Interval>& east,
-                                  const RelaxationOptions& options) {
+                                  const TubeDomains& tube, const RelaxationOptions& options) {
   if (const std::string why = structured_relaxation_refusal(m); !why.empty()) throw std::invalid_argument(why);
-  if (m.size() < 2 || north.size() != m.size() || east.size() != m.size())
-    throw std::invalid_argument("relax_structured: the tube must have one box per sample, and the mission two samples");
+  if (m.size() < 2 || tube.size() != m.size() || tube.mines.size() != static_cast<std::size_t>(m.mine_count))
+    throw std::invalid_argument("relax_structured: the tube must have one box per sample and mine, the mission two samples");
   StructuredBounds out;
-  out.north = north;
-  out.east = east;
+  out.north = tube.px;
+  out.east = tube.py;
   const FrameMargins frame = zone_frame(m);
   const SensorBoxes noise(m, errors.noise, frame), whole(m, m.model, frame, &regimes);
-  const Anchors a = anchors_of(m, whole, north, east);
+  const MissionNetwork net = build_network(m, m.model, gps_fixes(m), frame, regimes);
+  const Anchors a = anchors_of(net, tube);
   StepSums sums(m, noise, whole);
   std::vector<Form> runs;
   for (std::size_t i = 0; i + 1 < a.sample.size(); ++i) {
@@ -180,32 +240,17 @@ StructuredBounds relax_structured(const Mission& m, const StepRegimes& regimes, 
     for (std::size_t k = a.sample[i]; k < a.sample[i + 1]; ++k) sums.add_step(k);
     runs.push_back(sums.form(errors.bias_bound));
   }
-  const LinearProgram lp = program_of(a, runs, errors);
+  const LinearProgram lp = program_of(a, runs, tube, errors);
   ClpProgram clp(lp);
   if (proved_empty(clp, lp)) {
     out.consistent = false;
     return out;
   }
-  out.bias = bias_bounds(clp, lp, out);
-  for (std::size_t i = 0; i + 1 < a.sample.size(); ++i) {
-    const std::size_t first = a.sample[i], length = a.sample[i + 1] - first + 1;
-    std::vector<Form> forward(length), backward(length);
-    sums.clear();
-    for (std::size_t r = 1; r < length; ++r) {
-      sums.add_step(first + r - 1);
-      forward[r] = sums.form(errors.bias_bound);
-    }
-    sums.clear();
-    for (std::size_t r = length - 1; r-- > 0;) {
-      sums.add_step(first + r);
-      backward[r] = sums.form(errors.bias_bound);
-    }
-    for (std::size_t axis = 0; axis < 2; ++axis)
-      for (const double sign : {1.0, -1.0}) {
-        bound_run(clp, lp, {i, axis, sign, 1.0}, first, forward, options, out);
-        bound_run(clp, lp, {i + 1, axis, sign, -1.0}, first, backward, options, out);
-      }
-  }
+  const std::size_t z0 = lp.columns - kBiasTerms;
+  for (std::size_t t = 0; t < kBiasTerms; ++t) out.bias[t] = column_bounds(clp, lp, z0 + t, out);
+  for (std::size_t i = 0; i < tube.mines.size(); ++i)
+    out.mines.push_back({column_bounds(clp, lp, mine_column(a, i, 0), out), column_bounds(clp, lp, mine_column(a, i, 1), out)});
+  for (std::size_t i = 0; i + 1 < a.sample.size(); ++i) bound_samples_of_run(clp, lp, a, i, sums, errors, options, out);
   for (std::size_t k = 0; k < m.size(); ++k)
     if (out.north[k].is_empty() || out.east[k].is_empty()) out.consistent = false;
   return out;

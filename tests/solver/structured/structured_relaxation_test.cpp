@@ -78,19 +78,27 @@ TEST(StructuredRelaxation, KeepsTheTruthAndNarrowsTheTubeAsTheBiasShareGrows) {
       const MissionSolution tube = solve_mission(m);
       const StepRegimes regimes = classify_steps(m, m.model);
       const StructuredBounds b =
-          relax_structured(m, regimes, split_by_bias_share(m.model, share), tube.domains.px, tube.domains.py);
+          relax_structured(m, regimes, split_by_bias_share(m.model, share), tube.domains);
       ASSERT_TRUE(b.consistent);
       for (std::size_t k = 0; k < m.size(); ++k) {
         ASSERT_TRUE(b.north[k].contains(m.truth_x[k])) << k << " " << b.north[k].lo() << " " << m.truth_x[k];
         ASSERT_TRUE(b.east[k].contains(m.truth_y[k])) << k;
         ASSERT_TRUE(tube.domains.px[k].is_superset(b.north[k])) << k;
       }
+      double mine_before = 0.0, mine_after = 0.0;
+      for (std::size_t i = 0; i < b.mines.size(); ++i)
+        for (std::size_t axis = 0; axis < 2; ++axis) {
+          const Interval& solved = tube.domains.mines[i][static_cast<int>(axis)];
+          ASSERT_TRUE(b.mines[i][axis].contains(m.truth_mines[3 * i + axis])) << "mine " << i << " axis " << axis;
+          ASSERT_TRUE(solved.is_superset(b.mines[i][axis]));
+          if (!solved.is_bounded()) continue;  // (a mine no mark saw)
+          mine_before = std::max(mine_before, solved.width());
+          mine_after = std::max(mine_after, b.mines[i][axis].width());
+        }
       const double before = widest(tube.domains.px, tube.domains.py), after = widest(b.north, b.east);
-      std::printf(
-          "share %.1f seed %d: %zu fixes, widest box %.2f m -> %.2f m, %zu linear programs, heading bias in [%.2g, "
-          "%.2g]\n",
-          share, static_cast<int>(seed), m.gps_time.size(), before, after, b.linear_programs, b.bias[kHeadingBias].lo(),
-          b.bias[kHeadingBias].hi());
+      std::printf("share %.1f seed %d: %zu fixes, %zu marks; widest box %.2f -> %.2f m, mine %.2f -> %.2f m; %zu LPs\n",
+                  share, static_cast<int>(seed), m.gps_time.size(), m.mark_count(), before, after, mine_before,
+                  mine_after, b.linear_programs);
       if (share >= 0.9) {
         EXPECT_LT(after, 0.8 * before);
       }
@@ -103,8 +111,10 @@ TEST(StructuredRelaxation, RefusesReadingsWithTheirOwnHalfWidths) {
   m.half_widths.roll.assign(m.size(), 1e-3);
   EXPECT_FALSE(structured_relaxation_refusal(m).empty());
   const StepRegimes regimes;
-  std::vector<Interval> wide(m.size(), Interval(-1e6, 1e6));
-  EXPECT_THROW(relax_structured(m, regimes, split_by_bias_share(m.model, 0.5), wide, wide), std::invalid_argument);
+  TubeDomains wide;
+  wide.px = wide.py = wide.pz = std::vector<Interval>(m.size(), Interval(-1e6, 1e6));
+  wide.mines.assign(static_cast<std::size_t>(m.mine_count), Vec3I(Interval(-1e6, 1e6), Interval(-1e6, 1e6), Interval(0, 1e3)));
+  EXPECT_THROW(relax_structured(m, regimes, split_by_bias_share(m.model, 0.5), wide), std::invalid_argument);
 }
 
 }  // namespace
