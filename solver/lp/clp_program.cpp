@@ -17,7 +17,7 @@ std::vector<double> clp_bounds(const std::vector<double>& bounds) {
 
 }  // namespace
 
-ClpProgram::ClpProgram(const LinearProgram& lp) : model_(std::make_unique<ClpSimplex>()), rows_(lp.rows()) {
+ClpProgram::ClpProgram(const LinearProgram& lp) : model_(std::make_unique<ClpSimplex>()) {
   std::vector<CoinBigIndex> starts;
   std::vector<int> indices, lengths;
   for (std::size_t i = 0; i <= lp.rows(); ++i) starts.push_back(static_cast<CoinBigIndex>(lp.row_start[i]));
@@ -39,14 +39,15 @@ ClpProgram::Answer ClpProgram::minimize(std::span<const double> objective) {
     throw std::invalid_argument("ClpProgram::minimize: one coefficient per column");
   for (std::size_t j = 0; j < objective.size(); ++j) model_->setObjectiveCoefficient(static_cast<int>(j), objective[j]);
   model_->dual();
+  const auto rows = static_cast<std::size_t>(model_->numberRows());
   Answer a;
   if (model_->status() == 0) {
     a.status = Status::optimal;
-    a.multipliers.assign(model_->dualRowSolution(), model_->dualRowSolution() + rows_);
+    a.multipliers.assign(model_->dualRowSolution(), model_->dualRowSolution() + rows);
   } else if (model_->status() == 1) {
     a.status = Status::infeasible;
     if (const double* ray = model_->infeasibilityRay()) {
-      a.multipliers.assign(ray, ray + rows_);
+      a.multipliers.assign(ray, ray + rows);
       delete[] ray;
     }
   }

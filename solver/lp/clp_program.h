@@ -32,7 +32,6 @@ class ClpProgram {
 
  private:
   std::unique_ptr<ClpSimplex> model_;
-  std::size_t rows_ = 0;
 };
 
 }  // namespace gesmi

@@ -61,9 +61,10 @@ Anchors anchors_of(const MissionNetwork& net, const TubeDomains& tube) {
     if (d.mine < 0) continue;  // (an unassociated mark left out costs width only)
     const auto e = sonar_offset(d);
     if (!e) continue;
-    const TimeLocation& at = d.at;
-    const std::array<Interval, 2> forward = moved_back(at, {Interval(0.0), Interval(0.0)});
-    out.marks.push_back({at.k, static_cast<std::size_t>(d.mine), {-forward[0] - (*e)[0], -forward[1] - (*e)[1]}});
+    const TimeLocation& at = d.at;  // p(t) - P: at.forward off the grid
+    const Interval north = at.on_grid ? Interval(0.0) : at.forward[0],
+                   east = at.on_grid ? Interval(0.0) : at.forward[1];
+    out.marks.push_back({at.k, static_cast<std::size_t>(d.mine), {north - (*e)[0], east - (*e)[1]}});
     found.push_back({at.k, {tube.px[at.k], tube.py[at.k]}});
   }
   std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -225,7 +226,8 @@ StructuredBounds relax_structured(const Mission& m, const StepRegimes& regimes, 
                                   const TubeDomains& tube, const RelaxationOptions& options) {
   if (const std::string why = structured_relaxation_refusal(m); !why.empty()) throw std::invalid_argument(why);
   if (m.size() < 2 || tube.size() != m.size() || tube.mines.size() != static_cast<std::size_t>(m.mine_count))
-    throw std::invalid_argument("relax_structured: the tube must have one box per sample and mine, the mission two samples");
+    throw std::invalid_argument(
+        "relax_structured: the tube must have one box per sample and mine, the mission two samples");
   StructuredBounds out;
   out.north = tube.px;
   out.east = tube.py;
@@ -249,7 +251,8 @@ StructuredBounds relax_structured(const Mission& m, const StepRegimes& regimes, 
   const std::size_t z0 = lp.columns - kBiasTerms;
   for (std::size_t t = 0; t < kBiasTerms; ++t) out.bias[t] = column_bounds(clp, lp, z0 + t, out);
   for (std::size_t i = 0; i < tube.mines.size(); ++i)
-    out.mines.push_back({column_bounds(clp, lp, mine_column(a, i, 0), out), column_bounds(clp, lp, mine_column(a, i, 1), out)});
+    out.mines.push_back(
+        {column_bounds(clp, lp, mine_column(a, i, 0), out), column_bounds(clp, lp, mine_column(a, i, 1), out)});
   for (std::size_t i = 0; i + 1 < a.sample.size(); ++i) bound_samples_of_run(clp, lp, a, i, sums, errors, options, out);
   for (std::size_t k = 0; k < m.size(); ++k)
     if (out.north[k].is_empty() || out.east[k].is_empty()) out.consistent = false;

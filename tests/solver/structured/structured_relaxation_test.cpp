@@ -77,8 +77,7 @@ TEST(StructuredRelaxation, KeepsTheTruthAndNarrowsTheTubeAsTheBiasShareGrows) {
       const Mission m = bias_noise_mission(seed, share);
       const MissionSolution tube = solve_mission(m);
       const StepRegimes regimes = classify_steps(m, m.model);
-      const StructuredBounds b =
-          relax_structured(m, regimes, split_by_bias_share(m.model, share), tube.domains);
+      const StructuredBounds b = relax_structured(m, regimes, split_by_bias_share(m.model, share), tube.domains);
       ASSERT_TRUE(b.consistent);
       for (std::size_t k = 0; k < m.size(); ++k) {
         ASSERT_TRUE(b.north[k].contains(m.truth_x[k])) << k << " " << b.north[k].lo() << " " << m.truth_x[k];
@@ -113,7 +112,8 @@ TEST(StructuredRelaxation, RefusesReadingsWithTheirOwnHalfWidths) {
   const StepRegimes regimes;
   TubeDomains wide;
   wide.px = wide.py = wide.pz = std::vector<Interval>(m.size(), Interval(-1e6, 1e6));
-  wide.mines.assign(static_cast<std::size_t>(m.mine_count), Vec3I(Interval(-1e6, 1e6), Interval(-1e6, 1e6), Interval(0, 1e3)));
+  wide.mines.assign(static_cast<std::size_t>(m.mine_count),
+                    Vec3I(Interval(-1e6, 1e6), Interval(-1e6, 1e6), Interval(0, 1e3)));
   EXPECT_THROW(relax_structured(m, regimes, split_by_bias_share(m.model, 0.5), wide), std::invalid_argument);
 }
 
